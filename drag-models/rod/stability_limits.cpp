@@ -1,0 +1,67 @@
+#include "rod/stability_limits.h"
+
+#include "rod/rod_linearisation.h"
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <cstdio>
+
+namespace hsrod {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+double SphereMaterial::mass() const { return density * kPi * diameter * diameter * diameter / 6.0; }
+
+double SphereMaterial::moment_of_inertia() const { return mass() * diameter * diameter / 10.0; }
+
+RodStabilityLimits compute_stability_limits(const RodLayout& layout, const SphereMaterial& sphere,
+                                            const BeamBondMaterial& bond, double viscosity) {
+  RodStabilityLimits lim;
+  const double m = sphere.mass();
+  const double inertia = sphere.moment_of_inertia();
+  const double shear_modulus = sphere.youngs_modulus / (2.0 * (1.0 + sphere.poisson_ratio));
+  lim.rayleigh_time = kPi * 0.5 * sphere.diameter * std::sqrt(sphere.density / shear_modulus) /
+                      (0.1631 * sphere.poisson_ratio + 0.8766);
+  const double spacing = layout.bonds.empty()
+                             ? sphere.diameter
+                             : (layout.spheres[layout.bonds[0].second].position -
+                                layout.spheres[layout.bonds[0].first].position).norm();
+  const auto k = BeamBondStiffness::from_material(bond, spacing);
+  lim.axial_bond_time = std::sqrt(m / k.axial);
+  lim.bending_bond_time = std::sqrt(inertia / k.bending);
+  if (viscosity > 0.0) lim.stokes_relaxation_time = m / (3.0 * kPi * viscosity * sphere.diameter);
+
+  const Eigen::MatrixXd stiffness = linearised_bond_stiffness(layout, bond);
+  const Eigen::VectorXd mass_diagonal = rod_mass_diagonal(layout, sphere);
+  // Symmetric scaling M^-1/2 K M^-1/2 turns the generalised problem into a standard one.
+  const Eigen::VectorXd inv_sqrt_mass = mass_diagonal.cwiseSqrt().cwiseInverse();
+  const Eigen::MatrixXd scaled = inv_sqrt_mass.asDiagonal() * stiffness * inv_sqrt_mass.asDiagonal();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(scaled, Eigen::EigenvaluesOnly);
+  const double omega2 = eig.eigenvalues().maxCoeff();
+  lim.highest_bond_frequency = std::sqrt(std::max(omega2, 0.0));
+  lim.explicit_bond_limit = lim.highest_bond_frequency > 0.0 ? 2.0 / lim.highest_bond_frequency : 0.0;
+  return lim;
+}
+
+std::string RodStabilityLimits::table(double timestep) const {
+  char buf[1024];
+  auto ratio = [timestep](double t) { return t > 0.0 ? timestep / t : 0.0; };
+  std::snprintf(buf, sizeof(buf),
+                "  time scale                         value [s]     dt/value\n"
+                "  Rayleigh (Hertz contact)           %-12.4g  %.3g\n"
+                "  axial bond sqrt(m/k_n)             %-12.4g  %.3g\n"
+                "  bending bond sqrt(I_s/k_b)         %-12.4g  %.3g\n"
+                "  Stokes relaxation m/(3 pi mu d)    %-12.4g  %.3g\n"
+                "  explicit bond limit 2/omega_max    %-12.4g  %.3g\n",
+                rayleigh_time, ratio(rayleigh_time), axial_bond_time, ratio(axial_bond_time),
+                bending_bond_time, ratio(bending_bond_time), stokes_relaxation_time,
+                ratio(stokes_relaxation_time), explicit_bond_limit, ratio(explicit_bond_limit));
+  return buf;
+}
+
+}  // namespace hsrod

@@ -1,0 +1,222 @@
+/* ----------------------------------------------------------------------
+   hsrod - compute rod/shape (see compute_rod_shape.h)
+
+   compute ID group rod/shape [channel_width W] [channel_centre yc]
+                              [mean_velocity U] [section S]
+   Global array: one row per rod, columns (1-based, as thermo sees them):
+     1 rod (molecule) ID, 2-4 centre of mass [m], 5-6 velocity x y [m/s],
+     7 angle, eq. (1) [deg], 8 relative deflection, eq. (2) [-],
+     9 lateral displacement (y_com - yc)/W [-], 10 v_x / U [-],
+     11 number of spheres.
+   Global vector: the row of the first rod.
+------------------------------------------------------------------------- */
+
+#include "compute_rod_shape.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "memory.h"
+#include "update.h"
+
+#include "rod/rod_measures.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <set>
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+// One sphere as gathered from all procs.
+struct SphereRecord {
+  double molecule, tag, x, y, z, vx, vy, mass;
+};
+const int record_size = sizeof(SphereRecord) / sizeof(double);
+
+double number(Error *error, const char *keyword, const char *text) {
+  char *end = nullptr;
+  const double value = std::strtod(text, &end);
+  if (end == text || *end != '\0') {
+    char msg[256];
+    std::snprintf(msg, sizeof(msg), "Illegal compute rod/shape command: %s expects a number, got '%s'", keyword, text);
+    error->all(FLERR, msg);
+  }
+  return value;
+}
+
+}  // namespace
+
+ComputeRodShape::ComputeRodShape(LAMMPS *lmp, int &iarg, int narg, char **arg)
+    : Compute(lmp, iarg, narg, arg), mean_velocity_(0.0), section_size_(1), last_step_(-1) {
+  if (!atom->molecule_flag) error->all(FLERR, "compute rod/shape requires molecule IDs (atom_style ... molecular)");
+  channel_width_ = domain->boxhi[1] - domain->boxlo[1];
+  channel_centre_ = 0.5 * (domain->boxhi[1] + domain->boxlo[1]);
+  for (; iarg < narg; iarg += 2) {
+    if (iarg + 1 >= narg) {
+      char msg[128];
+      std::snprintf(msg, sizeof(msg), "Illegal compute rod/shape command: keyword %s needs a value", arg[iarg]);
+      error->all(FLERR, msg);
+    }
+    if (strcmp(arg[iarg], "channel_width") == 0) {
+      channel_width_ = number(error, arg[iarg], arg[iarg + 1]);
+      if (!(channel_width_ > 0.0)) error->all(FLERR, "compute rod/shape: channel_width must be > 0 m");
+    } else if (strcmp(arg[iarg], "channel_centre") == 0 || strcmp(arg[iarg], "channel_center") == 0) {
+      channel_centre_ = number(error, arg[iarg], arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "mean_velocity") == 0) {
+      mean_velocity_ = number(error, arg[iarg], arg[iarg + 1]);
+      if (!(mean_velocity_ > 0.0)) error->all(FLERR, "compute rod/shape: mean_velocity must be > 0 m/s");
+    } else if (strcmp(arg[iarg], "section") == 0) {
+      section_size_ = static_cast<int>(number(error, arg[iarg], arg[iarg + 1]));
+      if (section_size_ < 1) error->all(FLERR, "compute rod/shape: section (spheres per cross-section) must be >= 1");
+    } else {
+      char msg[256];
+      std::snprintf(msg, sizeof(msg),
+                    "Illegal compute rod/shape command: unknown keyword '%s' (expected channel_width, "
+                    "channel_centre, mean_velocity, section)", arg[iarg]);
+      error->all(FLERR, msg);
+    }
+  }
+  find_rods();
+  if (rod_ids_.empty()) error->all(FLERR, "compute rod/shape: no rods (bonded molecules) in the group");
+
+  array_flag = 1;
+  size_array_rows = static_cast<int>(rod_ids_.size());
+  size_array_cols = N_COLUMNS;
+  extarray = 0;
+  vector_flag = 1;
+  size_vector = N_COLUMNS;
+  extvector = 0;
+  memory->create(array, size_array_rows, size_array_cols, "rod/shape:array");
+  vector = new double[N_COLUMNS];
+}
+
+ComputeRodShape::~ComputeRodShape() {
+  memory->destroy(array);
+  delete[] vector;
+}
+
+void ComputeRodShape::init() {
+  const size_t before = rod_ids_.size();
+  find_rods();
+  if (rod_ids_.size() != before)
+    error->all(FLERR, "compute rod/shape: the number of rods changed since the compute was defined");
+}
+
+void ComputeRodShape::find_rods() {
+  std::set<int> local;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && atom->molecule[i] > 0) local.insert(atom->molecule[i]);
+  std::vector<int> mine(local.begin(), local.end());
+  int n = static_cast<int>(mine.size());
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < comm->nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  std::vector<int> all(std::max(total, 1));
+  MPI_Allgatherv(mine.data(), n, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT, world);
+  std::set<int> unique(all.begin(), all.begin() + total);
+  rod_ids_.assign(unique.begin(), unique.end());
+}
+
+void ComputeRodShape::measure() {
+  if (last_step_ == update->ntimestep) return;
+  last_step_ = update->ntimestep;
+
+  // Gather every sphere of every rod (unwrapped positions) on all procs:
+  // rods are small and the compute runs only at output steps.
+  std::vector<double> mine;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || atom->molecule[i] <= 0) continue;
+    double unwrapped[3];
+    domain->unmap(atom->x[i], atom->image[i], unwrapped);
+    const SphereRecord r = {static_cast<double>(atom->molecule[i]), static_cast<double>(atom->tag[i]),
+                            unwrapped[0], unwrapped[1], unwrapped[2], atom->v[i][0], atom->v[i][1],
+                            atom->rmass[i]};
+    const double *p = reinterpret_cast<const double *>(&r);
+    mine.insert(mine.end(), p, p + record_size);
+  }
+  int n = static_cast<int>(mine.size());
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < comm->nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  std::vector<double> all(std::max(total, 1));
+  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
+
+  std::map<int, std::vector<SphereRecord>> rods;
+  for (int k = 0; k < total / record_size; k++) {
+    SphereRecord r;
+    std::memcpy(&r, &all[k * record_size], sizeof(r));
+    rods[static_cast<int>(r.molecule)].push_back(r);
+  }
+
+  for (size_t row = 0; row < rod_ids_.size(); row++) {
+    double *out = array[row];
+    std::fill(out, out + N_COLUMNS, 0.0);
+    out[ROD_ID] = rod_ids_[row];
+    auto it = rods.find(rod_ids_[row]);
+    if (it == rods.end()) continue;
+    auto &spheres = it->second;
+    std::sort(spheres.begin(), spheres.end(), [](const SphereRecord &a, const SphereRecord &b) { return a.tag < b.tag; });
+    double mass = 0.0, com[3] = {0, 0, 0}, vel[2] = {0, 0};
+    for (const auto &s : spheres) {
+      mass += s.mass;
+      com[0] += s.mass * s.x;
+      com[1] += s.mass * s.y;
+      com[2] += s.mass * s.z;
+      vel[0] += s.mass * s.vx;
+      vel[1] += s.mass * s.vy;
+    }
+    // Section centres (spheres ordered section by section, as create_rod makes them).
+    std::vector<Eigen::Vector2d> centres;
+    const int nsec = static_cast<int>(spheres.size()) / section_size_;
+    for (int s = 0; s < nsec; s++) {
+      Eigen::Vector2d c(0, 0);
+      for (int k = 0; k < section_size_; k++) c += Eigen::Vector2d(spheres[s * section_size_ + k].x, spheres[s * section_size_ + k].y);
+      centres.push_back(c / section_size_);
+    }
+    out[COM_X] = com[0] / mass;
+    out[COM_Y] = com[1] / mass;
+    out[COM_Z] = com[2] / mass;
+    out[VEL_X] = vel[0] / mass;
+    out[VEL_Y] = vel[1] / mass;
+    out[N_SPHERES] = static_cast<double>(spheres.size());
+    if (nsec >= 2) {
+      // L_Rod = N d (paper): N times the mean centre distance along the
+      // rod, which the nearly inextensible bonds keep at d.
+      double path = 0.0;
+      for (int s = 1; s < nsec; s++) path += (centres[s] - centres[s - 1]).norm();
+      const double length = path * nsec / (nsec - 1);
+      out[ANGLE_DEG] = hsrod::rod_angle_eq1(centres.front(), centres.back()) * 180.0 / 3.14159265358979323846;
+      out[DEFLECTION] = hsrod::relative_deflection_eq2(centres.front(), centres.back(), centres, length);
+    }
+    out[LATERAL] = (out[COM_Y] - channel_centre_) / channel_width_;
+    if (mean_velocity_ > 0.0) out[VEL_RATIO] = out[VEL_X] / mean_velocity_;
+  }
+}
+
+void ComputeRodShape::compute_array() {
+  invoked_array = update->ntimestep;
+  measure();
+}
+
+void ComputeRodShape::compute_vector() {
+  invoked_vector = update->ntimestep;
+  measure();
+  for (int c = 0; c < N_COLUMNS; c++) vector[c] = array[0][c];
+}

@@ -1,0 +1,281 @@
+/* ----------------------------------------------------------------------
+   hsrod - create_rod command (see create_rod.h)
+
+   create_rod keyword value ...
+     required: spheres N, diameter d [m], type T, density rho [kg/m3],
+               centre x y z [m]
+     optional: angle alpha [deg] (0 = along y, perpendicular to the flow),
+               offset dy [m], section 1|RxL, spacing s [m], mol ID,
+               bond_type B
+------------------------------------------------------------------------- */
+
+#include "create_rod.h"
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "modify.h"
+#include "fix.h"
+#include "special.h"
+
+#include "rod/rod_layout.h"
+
+#include <mpi.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+double number(Error *error, const char *keyword, const char *text) {
+  char *end = nullptr;
+  const double value = std::strtod(text, &end);
+  if (end == text || *end != '\0') {
+    char msg[256];
+    std::snprintf(msg, sizeof(msg), "Illegal create_rod command: %s expects a number, got '%s'", keyword, text);
+    error->all(FLERR, msg);
+  }
+  return value;
+}
+
+int integer(Error *error, const char *keyword, const char *text) {
+  char *end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0') {
+    char msg[256];
+    std::snprintf(msg, sizeof(msg), "Illegal create_rod command: %s expects an integer, got '%s'", keyword, text);
+    error->all(FLERR, msg);
+  }
+  return static_cast<int>(value);
+}
+
+}  // namespace
+
+CreateRod::CreateRod(LAMMPS *lmp) : Pointers(lmp) {}
+
+void CreateRod::command(int narg, char **arg) {
+  if (domain->box_exist == 0) error->all(FLERR, "create_rod command before simulation box is defined");
+  if (!atom->molecular || !atom->molecule_flag || !atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR, "create_rod requires an atom style with spheres, bonds and molecule IDs "
+                      "(atom_style hybrid granular molecular)");
+
+  hsrod::RodSpec spec;
+  int type = 0, mol = 0, bond_type = 1;
+  double density = -1.0, offset = 0.0, angle_deg = 0.0;
+  bool have[5] = {false, false, false, false, false};  // spheres diameter type density centre
+
+  for (int iarg = 0; iarg < narg;) {
+    const char *key = arg[iarg];
+    auto need = [&](int n) {
+      if (iarg + n >= narg) {
+        char msg[256];
+        std::snprintf(msg, sizeof(msg), "Illegal create_rod command: keyword %s needs %d value(s)", key, n);
+        error->all(FLERR, msg);
+      }
+    };
+    if (strcmp(key, "spheres") == 0) {
+      need(1);
+      spec.number_of_sections = integer(error, key, arg[iarg + 1]);
+      have[0] = true;
+      iarg += 2;
+    } else if (strcmp(key, "diameter") == 0) {
+      need(1);
+      spec.sphere_diameter = number(error, key, arg[iarg + 1]);
+      have[1] = true;
+      iarg += 2;
+    } else if (strcmp(key, "type") == 0) {
+      need(1);
+      type = integer(error, key, arg[iarg + 1]);
+      have[2] = true;
+      iarg += 2;
+    } else if (strcmp(key, "density") == 0) {
+      need(1);
+      density = number(error, key, arg[iarg + 1]);
+      have[3] = true;
+      iarg += 2;
+    } else if (strcmp(key, "centre") == 0 || strcmp(key, "center") == 0) {
+      need(3);
+      for (int a = 0; a < 3; a++) spec.centre[a] = number(error, key, arg[iarg + 1 + a]);
+      have[4] = true;
+      iarg += 4;
+    } else if (strcmp(key, "angle") == 0) {
+      need(1);
+      angle_deg = number(error, key, arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(key, "offset") == 0) {
+      need(1);
+      offset = number(error, key, arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(key, "spacing") == 0) {
+      need(1);
+      spec.spacing = number(error, key, arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(key, "section") == 0) {
+      need(1);
+      try {
+        const auto rl = hsrod::parse_section(arg[iarg + 1]);
+        spec.section_rows = rl.first;
+        spec.section_layers = rl.second;
+      } catch (const std::invalid_argument &e) {
+        error->all(FLERR, (std::string("create_rod: ") + e.what()).c_str());
+      }
+      iarg += 2;
+    } else if (strcmp(key, "mol") == 0) {
+      need(1);
+      mol = integer(error, key, arg[iarg + 1]);
+      if (mol <= 0) error->all(FLERR, "create_rod: mol must be a positive molecule ID");
+      iarg += 2;
+    } else if (strcmp(key, "bond_type") == 0) {
+      need(1);
+      bond_type = integer(error, key, arg[iarg + 1]);
+      if (bond_type <= 0) error->all(FLERR, "create_rod: bond_type must be >= 1");
+      iarg += 2;
+    } else {
+      char msg[256];
+      std::snprintf(msg, sizeof(msg),
+                    "Illegal create_rod command: unknown keyword '%s' (expected spheres, diameter, type, "
+                    "density, centre, angle, offset, spacing, section, mol, bond_type)", key);
+      error->all(FLERR, msg);
+    }
+  }
+  const char *names[5] = {"spheres", "diameter", "type", "density", "centre"};
+  for (int k = 0; k < 5; k++) {
+    if (!have[k]) {
+      char msg[128];
+      std::snprintf(msg, sizeof(msg), "Illegal create_rod command: missing required keyword %s", names[k]);
+      error->all(FLERR, msg);
+    }
+  }
+  if (spec.number_of_sections < 2) {
+    char msg[128];
+    std::snprintf(msg, sizeof(msg), "create_rod: spheres must be >= 2 (got %d)", spec.number_of_sections);
+    error->all(FLERR, msg);
+  }
+  if (!(spec.sphere_diameter > 0.0)) error->all(FLERR, "create_rod: diameter must be > 0 m");
+  if (!(density > 0.0)) error->all(FLERR, "create_rod: density must be > 0 kg/m3");
+  if (type < 1 || type > atom->ntypes) {
+    char msg[128];
+    std::snprintf(msg, sizeof(msg), "create_rod: type %d out of range 1..%d", type, atom->ntypes);
+    error->all(FLERR, msg);
+  }
+  if (spec.spacing < 0.0) error->all(FLERR, "create_rod: spacing must be >= 0 m (0 = one diameter)");
+
+  const double pi = 3.14159265358979323846;
+  spec.angle = angle_deg * pi / 180.0;
+  spec.centre.y() += offset;
+  const hsrod::RodLayout layout = hsrod::make_rod_layout(spec);
+
+  // Every sphere must lie inside the box (periodic directions wrap).
+  for (const auto &s : layout.spheres) {
+    for (int a = 0; a < 3; a++) {
+      if (domain->periodicity[a]) continue;
+      if (s.position[a] < domain->boxlo[a] || s.position[a] >= domain->boxhi[a]) {
+        char msg[256];
+        std::snprintf(msg, sizeof(msg),
+                      "create_rod: sphere at (%g %g %g) is outside the simulation box in direction %c",
+                      s.position[0], s.position[1], s.position[2], "xyz"[a]);
+        error->all(FLERR, msg);
+      }
+    }
+  }
+
+  // Bonds stored per sphere: once (on the lower ID) with newton_bond, on both otherwise.
+  std::vector<int> stored(layout.spheres.size(), 0);
+  for (const auto &b : layout.bonds) {
+    stored[b.first]++;
+    if (!force->newton_bond) stored[b.second]++;
+  }
+  int needed = 0;
+  for (int c : stored) needed = std::max(needed, c);
+  if (atom->bond_per_atom < needed) {
+    if (atom->nbonds > 0)
+      error->all(FLERR, "create_rod: atoms already carry bonds with fewer bond slots per atom than this rod "
+                        "needs; create the rod with the most bonds per sphere first");
+    atom->bond_per_atom = needed;
+    atom->avec->grow(atom->nmax);
+  }
+  if (atom->nbondtypes < bond_type) atom->nbondtypes = bond_type;
+
+  // New IDs continue after the largest existing ones.
+  int local_max[2] = {0, 0};
+  for (int i = 0; i < atom->nlocal; i++) {
+    local_max[0] = std::max(local_max[0], atom->tag[i]);
+    local_max[1] = std::max(local_max[1], atom->molecule[i]);
+  }
+  int global_max[2];
+  MPI_Allreduce(local_max, global_max, 2, MPI_INT, MPI_MAX, world);
+  const int first_tag = global_max[0] + 1;
+  if (mol == 0) mol = global_max[1] + 1;
+
+  const int nlocal_before = atom->nlocal;
+  std::vector<int> local_index(layout.spheres.size(), -1);
+  for (size_t s = 0; s < layout.spheres.size(); s++) {
+    double xone[3] = {layout.spheres[s].position[0], layout.spheres[s].position[1], layout.spheres[s].position[2]};
+    tagint image = ((tagint)IMGMAX << IMG2BITS) | ((tagint)IMGMAX << IMGBITS) | IMGMAX;
+    domain->remap(xone, image);
+    bool mine = true;
+    for (int a = 0; a < 3; a++)
+      if (xone[a] < domain->sublo[a] || xone[a] >= domain->subhi[a]) mine = false;
+    if (!mine) continue;
+    atom->avec->create_atom(type, xone);
+    const int i = atom->nlocal - 1;
+    atom->image[i] = image;
+    atom->tag[i] = first_tag + static_cast<int>(s);
+    atom->molecule[i] = mol;
+    atom->radius[i] = 0.5 * spec.sphere_diameter;
+    if (atom->density_flag) atom->density[i] = density;
+    atom->rmass[i] = density * pi * std::pow(spec.sphere_diameter, 3) / 6.0;
+    atom->num_bond[i] = 0;
+    local_index[s] = i;
+  }
+  int created_here = atom->nlocal - nlocal_before, created = 0;
+  MPI_Allreduce(&created_here, &created, 1, MPI_INT, MPI_SUM, world);
+  if (created != static_cast<int>(layout.spheres.size()))
+    error->all(FLERR, "create_rod: some spheres were not created (outside every processor's subdomain)");
+
+  auto add_bond = [&](int s, int partner) {
+    const int i = local_index[s];
+    if (i < 0) return;
+    const int m = atom->num_bond[i]++;
+    atom->bond_type[i][m] = bond_type;
+    atom->bond_atom[i][m] = first_tag + partner;
+  };
+  for (const auto &b : layout.bonds) {
+    add_bond(b.first, b.second);
+    if (!force->newton_bond) add_bond(b.second, b.first);
+  }
+
+  // Fixes with per-atom state initialise the new atoms.
+  for (int f = 0; f < modify->nfix; f++)
+    if (modify->fix[f]->create_attribute)
+      for (int i = nlocal_before; i < atom->nlocal; i++) modify->fix[f]->set_arrays(i);
+
+  atom->natoms += created;
+  atom->nbonds += static_cast<bigint>(layout.bonds.size());
+  if (atom->map_style) {
+    atom->nghost = 0;
+    atom->map_init();
+    atom->map_set();
+  }
+  Special special(lmp);
+  special.build();
+
+  if (comm->me == 0) {
+    char msg[256];
+    std::snprintf(msg, sizeof(msg),
+                  "create_rod: rod mol %d: %d spheres (section %dx%d) of d = %g m, %d bonds, angle %g deg, "
+                  "IDs %d..%d\n", mol, created, spec.section_rows, spec.section_layers, spec.sphere_diameter,
+                  static_cast<int>(layout.bonds.size()), angle_deg, first_tag, first_tag + created - 1);
+    if (screen) fputs(msg, screen);
+    if (logfile) fputs(msg, logfile);
+  }
+}

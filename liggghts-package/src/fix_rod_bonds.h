@@ -1,0 +1,90 @@
+/* ----------------------------------------------------------------------
+   hsrod - flexible rods in Hele-Shaw channels (LIGGGHTS package)
+
+   fix rod/bonds: elastic beam bonds between the spheres of a rod.
+   The bond law lives in drag-models/rod/beam_bond.h; this fix gathers the
+   bonded pairs from LIGGGHTS' bond topology, keeps each sphere's
+   orientation and each bond's rest state as per-atom data (so they migrate
+   with the atoms and survive write_restart/read_restart), and scatters the
+   bond forces and torques. Doc: liggghts-package/doc/fix_rod_bonds.txt
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+
+FixStyle(rod/bonds,FixRodBonds)
+
+#else
+
+#ifndef LMP_FIX_ROD_BONDS_H
+#define LMP_FIX_ROD_BONDS_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixRodBonds : public Fix {
+ public:
+  FixRodBonds(class LAMMPS *, int, char **);
+  ~FixRodBonds();
+  int setmask();
+  void init();
+  void setup(int);
+  void post_integrate();
+  void post_force(int);
+  double compute_scalar();
+  double compute_vector(int);
+
+  void grow_arrays(int);
+  void copy_arrays(int, int, int);
+  void set_arrays(int);
+  int pack_exchange(int, double *);
+  int unpack_exchange(int, double *);
+  int pack_restart(int, double *);
+  void unpack_restart(int, int);
+  int size_restart(int);
+  int maxsize_restart();
+  int pack_comm(int, int *, double *, int, int *);
+  void unpack_comm(int, int, double *);
+  double memory_usage();
+
+  // Largest number of bonds one sphere can store a rest state for.
+  static const int max_bonds_per_sphere = 8;
+
+  // Explicit stability limit of the rod's bonds [s] (computed in init()).
+  double explicit_bond_limit() const { return explicit_limit_; }
+
+ private:
+  // Rest state of one bond as stored per atom: 8 doubles, see beam_bond.h.
+  struct BondRestRecord {
+    double partner_tag;        // 0 = unused slot
+    double rest_vector[3];     // x_j - x_i at rest, in i's body frame [m]
+    double rest_rotation[4];   // q_i^-1 q_j at rest (w, x, y, z)
+  };
+  static const int record_doubles = sizeof(BondRestRecord) / sizeof(double);
+  static const int peratom_doubles = 4 + max_bonds_per_sphere * record_doubles;
+
+  double youngs_modulus_;      // E [Pa]
+  double poisson_ratio_;       // nu [-]
+  double damping_ratio_;       // fraction of critical damping [-]
+  double bond_radius_ratio_;   // bond diameter / smaller sphere diameter [-]
+  bool timestep_check_;        // refuse a timestep above the explicit limit
+  bool exclude_pairs_;         // keep the rod out of its own pair contacts
+
+  double **orientation_;       // per atom: body -> lab quaternion (w, x, y, z)
+  double **bond_rest_;         // per atom: max_bonds_per_sphere BondRestRecord
+  double elastic_energy_;      // [J], this proc, last evaluation
+  double max_strain_;          // largest |axial strain| [-], this proc
+  double explicit_limit_;      // [s]
+  bool limits_printed_;
+
+  BondRestRecord *records(int i) { return reinterpret_cast<BondRestRecord *>(bond_rest_[i]); }
+  BondRestRecord *find_or_create_record(int i, int j, int partner_tag);
+  void reset_atom(int i);
+  void compute_stability_limits();
+  void compute_bonds();
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

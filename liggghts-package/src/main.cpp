@@ -1,0 +1,34 @@
+// hsrod: LIGGGHTS 3.8 (Debian's libliggghts) with this package's styles.
+// Same command line as liggghts (-in, -var, -log, -echo, -screen, ...),
+// serial or under mpirun. Mirrors LIGGGHTS' own main(), plus the style
+// registration between creating the instance and reading the input.
+
+#include "input.h"
+#include "lammps.h"
+#include "signal_handling.h"
+
+#include "style_registration.h"
+
+#include <mpi.h>
+
+#include <csignal>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+int main(int argc, char **argv) {
+  // Ctrl-C / SIGTERM end the run cleanly at the next step, as in liggghts.
+  struct sigaction int_action;
+  std::memset(&int_action, 0, sizeof(int_action));
+  int_action.sa_handler = SignalHandler::int_handler;
+  sigaction(SIGINT, &int_action, nullptr);
+  sigaction(SIGTERM, &int_action, nullptr);
+
+  MPI_Init(&argc, &argv);
+  LAMMPS *lammps = new LAMMPS(argc, argv, MPI_COMM_WORLD);
+  hsrod::register_styles(lammps);
+  lammps->input->file();
+  delete lammps;
+  MPI_Finalize();
+  return 0;
+}

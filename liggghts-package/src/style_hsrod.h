@@ -1,0 +1,7 @@
+// The styles of the hsrod package, in the form of LIGGGHTS' style_*.h files:
+// included with FIX_CLASS / COMPUTE_CLASS / COMMAND_CLASS defined it yields
+// the FixStyle(...) lines, otherwise the class declarations. Add new style
+// headers here.
+#include "compute_rod_shape.h"
+#include "create_rod.h"
+#include "fix_rod_bonds.h"

@@ -1,0 +1,44 @@
+// Stability limits against the values DESIGN.md tabulates for the pore
+// scene (d = 3 um, rho = 1170 kg/m3, mu = 1 mPa s) and against the exact
+// limit of a two-sphere axial oscillator.
+#include "rod/stability_limits.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace hsrod;
+
+namespace {
+hsrod::RodStabilityLimits limits(double youngs_modulus, int n) {
+  RodSpec spec;
+  spec.number_of_sections = n;
+  spec.sphere_diameter = 3e-6;
+  BeamBondMaterial bond{youngs_modulus, 0.3, 3e-6, 0.0};
+  return compute_stability_limits(make_rod_layout(spec), {3e-6, 1170.0, youngs_modulus, 0.3}, bond, 1e-3);
+}
+}  // namespace
+
+TEST(StabilityLimits, MatchDesignTableForThePoreScene) {
+  // DESIGN.md, "Time integration and stability" (2 significant digits).
+  const auto soft = limits(15e3, 10);
+  EXPECT_NEAR(soft.stokes_relaxation_time, 0.6e-6, 0.05e-6);
+  EXPECT_NEAR(soft.axial_bond_time, 0.7e-6, 0.05e-6);
+  EXPECT_NEAR(soft.bending_bond_time, 0.9e-6, 0.05e-6);
+  EXPECT_NEAR(soft.rayleigh_time, 2.3e-6, 0.1e-6);
+  const auto stiff = limits(15e6, 10);
+  EXPECT_NEAR(stiff.axial_bond_time, 22e-9, 1e-9);
+  EXPECT_NEAR(stiff.bending_bond_time, 27e-9, 1e-9);
+  EXPECT_NEAR(stiff.rayleigh_time, 73e-9, 2e-9);
+  // Limits scale as 1/sqrt(E).
+  EXPECT_NEAR(soft.explicit_bond_limit / stiff.explicit_bond_limit, std::sqrt(1000.0), 1e-6 * std::sqrt(1000.0));
+}
+
+TEST(StabilityLimits, TwoSphereAxialModeIsExact) {
+  // Two free spheres: the axial mode has omega^2 = 2 k_n / m; the explicit
+  // limit can only be lower (other modes may be faster).
+  const auto lim = limits(15e6, 2);
+  const double axial_omega = std::sqrt(2.0) / lim.axial_bond_time;
+  EXPECT_GE(lim.highest_bond_frequency, axial_omega * (1 - 1e-6));
+  EXPECT_LE(lim.explicit_bond_limit, std::sqrt(2.0) * lim.axial_bond_time * (1 + 1e-6));
+}

@@ -427,7 +427,7 @@ int FixRodBonds::pack_comm(int n, int *list, double *buf, int, int *) {
     const int j = list[k];
     for (int a = 0; a < 4; a++) buf[m++] = orientation_[j][a];
   }
-  return m;
+  return 4;  // LIGGGHTS' Comm expects datums per atom, not the total
 }
 
 void FixRodBonds::unpack_comm(int n, int first, double *buf) {

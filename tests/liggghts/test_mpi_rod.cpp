@@ -1,0 +1,67 @@
+// A rod split across two MPI ranks (and across a periodic boundary) follows
+// the same trajectory as on one rank, to round-off. Run under
+// `mpirun -np 2`: the 2-rank run uses MPI_COMM_WORLD, rank 0 then repeats
+// the run alone on MPI_COMM_SELF as the reference.
+#include "liggghts_session.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace {
+
+std::vector<std::string> script(const std::string &processors) {
+  // Periodic in x; the rod (along x, 20 spheres of 3 um) straddles both the
+  // periodic boundary at x = +-3e-5 and the rank boundary at x = 0 as it moves.
+  return {"units si",
+          "atom_style hybrid granular molecular",
+          "atom_modify map array sort 0 0",
+          "boundary p f f",
+          "newton off",
+          "processors " + processors,
+          "communicate single cutoff 1e-5 vel yes",
+          "region box block -3e-5 3e-5 -3e-5 3e-5 -1e-5 1e-5 units box",
+          "create_box 1 box",
+          "create_rod spheres 20 diameter 3e-6 type 1 density 1170 centre 2.5e-5 0 0 angle 80",
+          "group ends id 1 20",
+          "fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3 damping 0.05",
+          "fix integrate all nve/sphere",
+          "velocity all set 0.5 0 0",
+          "velocity ends set 0.5 0.3 0.1",
+          "timestep 1e-8",
+          "run 3000"};
+}
+
+}  // namespace
+
+TEST(MpiRod, TwoRanksMatchOneRank) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  ASSERT_EQ(size, 2) << "run with mpirun -np 2";
+
+  std::vector<Eigen::Vector3d> parallel;
+  {
+    hsrod_test::LiggghtsSession s(MPI_COMM_WORLD);
+    s.commands(script("2 1 1"));
+    parallel = s.gather("x");
+  }
+  int ok = 1;
+  if (rank == 0) {
+    hsrod_test::LiggghtsSession s(MPI_COMM_SELF);
+    s.commands(script("1 1 1"));
+    const auto serial = s.gather("x");
+    ASSERT_EQ(serial.size(), parallel.size());
+    double worst = 0.0, travelled = 0.0;
+    for (size_t i = 0; i < serial.size(); i++) {
+      Eigen::Vector3d diff = parallel[i] - serial[i];
+      diff.x() -= 6e-5 * std::round(diff.x() / 6e-5);  // periodic image
+      worst = std::max(worst, diff.norm());
+    }
+    travelled = 0.5 * 3000 * 1e-8;
+    std::printf("2 ranks vs 1 rank: largest position difference %.3g m (rod moved %.3g m)\n", worst, travelled);
+    EXPECT_LT(worst, 1e-9 * 3e-6);
+    ok = worst < 1e-9 * 3e-6;
+  }
+  MPI_Bcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD);
+}

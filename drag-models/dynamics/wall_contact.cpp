@@ -1,0 +1,36 @@
+#include "dynamics/wall_contact.h"
+
+#include <cmath>
+
+namespace hsrod {
+
+namespace {
+// Adds a Hertz contact of overlap delta along the unit normal n (into the fluid).
+void add_hertz(WallContact& c, double effective_modulus, double radius, double delta, const Eigen::Vector3d& n) {
+  if (delta <= 0.0) return;
+  const double root = std::sqrt(radius * delta);
+  c.force += (4.0 / 3.0) * effective_modulus * root * delta * n;
+  c.stiffness += 2.0 * effective_modulus * root * n * n.transpose();
+  c.touching = true;
+}
+}  // namespace
+
+WallContact wall_contact(const ChannelGeometry& geometry, const WallContactParameters& p, const Eigen::Vector3d& x,
+                         double radius) {
+  WallContact c;
+  const double e = p.effective_modulus();
+  if (p.planform_walls) {
+    const double distance = geometry.signed_distance(x.x(), x.y());
+    if (distance < radius) {
+      const Eigen::Vector2d n = geometry.wall_normal(x.x(), x.y());
+      add_hertz(c, e, radius, radius - distance, Eigen::Vector3d(n.x(), n.y(), 0.0));
+    }
+  }
+  if (p.gap_walls) {
+    add_hertz(c, e, radius, radius - (x.z() - p.gap_bottom), Eigen::Vector3d::UnitZ());
+    add_hertz(c, e, radius, radius - (p.gap_bottom + geometry.gap_height() - x.z()), -Eigen::Vector3d::UnitZ());
+  }
+  return c;
+}
+
+}  // namespace hsrod

@@ -1,0 +1,157 @@
+#include "flow/flow_cache.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include <unistd.h>
+
+namespace hsrod {
+namespace {
+
+constexpr char kMagic[8] = {'H', 'S', 'R', 'O', 'D', 'B', 'F', '1'};
+constexpr std::uint32_t kFormatVersion = 1;
+
+std::uint64_t hash_arrays(const StaggeredField& f) {
+  std::uint64_t h = fnv1a64(f.u_ext().data(), f.u_ext().size() * sizeof(double));
+  h = fnv1a64(f.v_ext().data(), f.v_ext().size() * sizeof(double), h);
+  return fnv1a64(f.p_ext().data(), f.p_ext().size() * sizeof(double), h);
+}
+
+template <class T>
+bool read_pod(std::istream& in, T& value) {
+  return static_cast<bool>(in.read(reinterpret_cast<char*>(&value), sizeof(T)));
+}
+template <class T>
+void write_pod(std::ostream& out, const T& value) {
+  out.write(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+bool read_doubles(std::istream& in, std::vector<double>& v, std::size_t n) {
+  v.resize(n);
+  return static_cast<bool>(in.read(reinterpret_cast<char*>(v.data()), n * sizeof(double)));
+}
+void write_doubles(std::ostream& out, const std::vector<double>& v) {
+  out.write(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+}
+
+}  // namespace
+
+std::uint64_t fnv1a64(const void* data, std::size_t size, std::uint64_t seed) {
+  const auto* bytes = static_cast<const unsigned char*>(data);
+  std::uint64_t h = seed;
+  for (std::size_t k = 0; k < size; ++k) {
+    h ^= bytes[k];
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+std::string brinkman_cache_key(const ChannelGeometry& geo, const MacGrid& grid,
+                               double inertia_reynolds) {
+  std::ostringstream k;
+  k.precision(17);
+  k << "hsrod depth-averaged Brinkman field; scheme " << kBrinkmanSchemeVersion
+    << "; units H, U, mu U/H; L " << geo.length() << "; W " << geo.width() << "; cylinders "
+    << geo.cylinders().size();
+  for (const ZCylinder& c : geo.cylinders())
+    k << " (" << c.center_x - geo.x_lo() << ' ' << c.center_y - geo.y_lo() << ' ' << c.radius
+      << ')';
+  k << "; grid " << grid.nx << 'x' << grid.ny << " h " << grid.hx << ' ' << grid.hy
+    << "; inertia Re_H " << inertia_reynolds;
+  return k.str();
+}
+
+std::string brinkman_cache_file_name(const std::string& key) {
+  char name[64];
+  std::snprintf(name, sizeof name, "brinkman-%016llx.bin",
+                static_cast<unsigned long long>(fnv1a64(key.data(), key.size())));
+  return name;
+}
+
+std::filesystem::path default_cache_directory() {
+  auto env = [](const char* name) -> std::string {
+    const char* v = std::getenv(name);
+    return v ? std::string(v) : std::string();
+  };
+  if (!env("HSROD_CACHE_DIR").empty()) return env("HSROD_CACHE_DIR");
+  if (!env("XDG_CACHE_HOME").empty()) return std::filesystem::path(env("XDG_CACHE_HOME")) / "hsrod";
+  if (!env("HOME").empty()) return std::filesystem::path(env("HOME")) / ".cache" / "hsrod";
+  return {};
+}
+
+std::optional<StaggeredField> load_cached_field(const std::filesystem::path& file,
+                                                const std::string& key) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  char magic[8];
+  std::uint32_t version = 0, key_length = 0;
+  if (!in.read(magic, 8) || std::string(magic, 8) != std::string(kMagic, 8)) return std::nullopt;
+  if (!read_pod(in, version) || version != kFormatVersion) return std::nullopt;
+  if (!read_pod(in, key_length) || key_length != key.size()) return std::nullopt;
+  std::string stored(key_length, '\0');
+  if (!in.read(stored.data(), key_length) || stored != key) return std::nullopt;
+  std::int32_t nx = 0, ny = 0;
+  MacGrid g;
+  if (!read_pod(in, nx) || !read_pod(in, ny) || !read_pod(in, g.hx) || !read_pod(in, g.hy))
+    return std::nullopt;
+  if (nx < 1 || ny < 1 || nx > (1 << 20) || ny > (1 << 20)) return std::nullopt;
+  g.nx = nx;
+  g.ny = ny;
+  std::vector<double> u, v, p;
+  if (!read_doubles(in, u, std::size_t(nx + 1) * (ny + 2)) ||
+      !read_doubles(in, v, std::size_t(nx + 2) * (ny + 1)) ||
+      !read_doubles(in, p, std::size_t(nx + 2) * ny))
+    return std::nullopt;
+  std::uint64_t checksum = 0;
+  if (!read_pod(in, checksum)) return std::nullopt;
+  StaggeredField field(g, std::move(u), std::move(v), std::move(p));
+  if (hash_arrays(field) != checksum) return std::nullopt;
+  return field;
+}
+
+bool store_cached_field(const std::filesystem::path& file, const std::string& key,
+                        const StaggeredField& field, std::string* error) {
+  std::error_code ec;
+  std::filesystem::create_directories(file.parent_path(), ec);
+  if (ec) {
+    if (error) *error = "cannot create cache directory " + file.parent_path().string() + ": " + ec.message();
+    return false;
+  }
+  const std::filesystem::path tmp =
+      file.string() + ".tmp." + std::to_string(static_cast<long>(::getpid()));
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      if (error) *error = "cannot write cache file " + tmp.string();
+      return false;
+    }
+    out.write(kMagic, 8);
+    write_pod(out, kFormatVersion);
+    write_pod(out, static_cast<std::uint32_t>(key.size()));
+    out.write(key.data(), static_cast<std::streamsize>(key.size()));
+    write_pod(out, static_cast<std::int32_t>(field.grid().nx));
+    write_pod(out, static_cast<std::int32_t>(field.grid().ny));
+    write_pod(out, field.grid().hx);
+    write_pod(out, field.grid().hy);
+    write_doubles(out, field.u_ext());
+    write_doubles(out, field.v_ext());
+    write_doubles(out, field.p_ext());
+    write_pod(out, hash_arrays(field));
+    if (!out) {
+      if (error) *error = "write error on cache file " + tmp.string();
+      std::filesystem::remove(tmp, ec);
+      return false;
+    }
+  }
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) {
+    if (error) *error = "cannot rename cache file to " + file.string() + ": " + ec.message();
+    std::filesystem::remove(tmp, ec);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace hsrod

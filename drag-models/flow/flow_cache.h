@@ -1,0 +1,54 @@
+// On-disk cache of solved background-flow fields, so that a planform is solved
+// once and every later run with the same scene loads it (DESIGN.md: "a
+// planform solved once is cached (keyed by the scene)").
+//
+// A field is stored in dimensionless form (lengths / H, velocity / U,
+// pressure / (mu U / H)). Without the inertia term that field depends only on
+// the planform shape in units of H and on the grid, so scenes that differ in
+// U, mu, rho or an overall translation share one file; with inertia the key
+// also holds Re_H = rho U H / mu. The key is a canonical text of these
+// numbers (17 significant digits); the file name is its 64-bit FNV-1a hash,
+// and the file repeats the full key, which is compared on loading (a hash
+// collision or a stale file is ignored and solved anew).
+//
+// File format (binary, native endianness, 8-byte doubles):
+//   "HSRODBF1"  uint32 format version  uint32 key length  key bytes
+//   int32 nx  int32 ny  float64 hx  float64 hy
+//   u_ext[(nx+1)(ny+2)]  v_ext[(nx+2)(ny+1)]  p_ext[(nx+2) ny]
+//   uint64 FNV-1a of all array bytes
+// Files are written to a temporary name and renamed, so concurrent runs never
+// read a half-written file.
+#pragma once
+
+#include "flow/staggered_field.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace hsrod {
+
+// Version of the discretisation; part of every key. Bump it whenever the
+// solver's results change so that old cache files are not used.
+inline constexpr const char* kBrinkmanSchemeVersion = "mac-shortley-weller-1";
+
+std::string brinkman_cache_key(const ChannelGeometry& scaled_geometry, const MacGrid& grid,
+                               double inertia_reynolds);
+std::uint64_t fnv1a64(const void* data, std::size_t size, std::uint64_t seed = 14695981039346656037ull);
+// "brinkman-<16 hex digits>.bin"
+std::string brinkman_cache_file_name(const std::string& key);
+
+// $HSROD_CACHE_DIR if set and non-empty, else $XDG_CACHE_HOME/hsrod, else
+// $HOME/.cache/hsrod; empty if none of these variables is set.
+std::filesystem::path default_cache_directory();
+
+// The field stored in `file` if it exists, is intact and holds `key`.
+std::optional<StaggeredField> load_cached_field(const std::filesystem::path& file,
+                                                const std::string& key);
+// Writes the field (creating the directory); returns false and sets `error`
+// on failure (the solve is still valid, only not cached).
+bool store_cached_field(const std::filesystem::path& file, const std::string& key,
+                        const StaggeredField& field, std::string* error);
+
+}  // namespace hsrod

@@ -1,0 +1,16 @@
+// Newtonian carrier fluid of a scene (DESIGN.md, "Scenes": mu, rho_f).
+#pragma once
+
+namespace hsrod {
+
+struct FluidProperties {
+  double dynamic_viscosity = 1.0e-3;  // mu [Pa s]
+  double density = 1000.0;            // rho_f [kg/m^3]
+
+  // Throws std::invalid_argument unless mu > 0 and rho_f >= 0 (both finite).
+  void validate() const;
+  // Kinematic viscosity nu = mu / rho_f [m^2/s] (rho_f > 0).
+  double kinematic_viscosity() const { return dynamic_viscosity / density; }
+};
+
+}  // namespace hsrod

@@ -1,0 +1,90 @@
+// Background flow of an arbitrary planform from the grid solver
+// (brinkman_grid_solver.h), solved once per scene and cached on disk
+// (flow_cache.h); queries interpolate the stored field (staggered_field.h).
+#pragma once
+
+#include "flow/background_flow.h"
+#include "flow/fluid_properties.h"
+#include "flow/inflow.h"
+#include "flow/staggered_field.h"
+
+#include <string>
+
+namespace hsrod {
+
+struct GridBrinkmanOptions {
+  // Cell size [m]; 0 picks it from the two resolution targets below.
+  double cell_size = 0.0;
+  // Cells per Brinkman wall-layer length H / sqrt(12) (automatic size).
+  int cells_per_wall_layer = 3;
+  // Cells across the narrowest opening, e.g. the pore (automatic size).
+  int cells_across_opening = 16;
+  // Largest accepted grid [cells]; larger requests throw std::invalid_argument.
+  long max_cells = 4'000'000;
+  // Gap-averaged inertia (6/5) rho (u.grad)u, by Picard iterations.
+  bool include_inertia = false;
+  int max_picard_iterations = 50;
+  double picard_tolerance = 1e-9;  // on max |du| / U between iterations [-]
+  // Cache: read and write solved fields in cache_dir ("" = default_cache_directory(),
+  // i.e. $HSROD_CACHE_DIR, $XDG_CACHE_HOME/hsrod or ~/.cache/hsrod).
+  bool use_cache = true;
+  std::string cache_dir;
+};
+
+// Cell size [m] the options give for `geometry`:
+// min(H / (sqrt(12) cells_per_wall_layer), narrowest_opening / cells_across_opening)
+// unless cell_size is set.
+double grid_cell_size(const ChannelGeometry& geometry, const GridBrinkmanOptions& options);
+// The MAC grid (in units of H) covering the planform with cells no larger than
+// grid_cell_size: nx = ceil(L / h), ny = ceil(W / h).
+MacGrid make_mac_grid(const ChannelGeometry& geometry, const GridBrinkmanOptions& options);
+// The planform in units of H with its lower corner at the origin.
+ChannelGeometry scaled_planform(const ChannelGeometry& geometry);
+
+class GridBrinkmanFlow final : public BackgroundFlow {
+ public:
+  // Loads the field from the cache or solves (and stores) it. Throws
+  // std::invalid_argument for bad fluid/options, std::runtime_error if the
+  // solve fails.
+  GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidProperties& fluid,
+                   const Inflow& inflow, const GridBrinkmanOptions& options = {});
+
+  Eigen::Vector2d velocity(double x, double y) const override;
+  Eigen::Matrix2d velocity_gradient(double x, double y) const override;
+  double pressure(double x, double y) const override;
+  double mean_velocity() const override { return mean_velocity_; }
+  const ChannelGeometry& geometry() const override { return geometry_; }
+  std::string description() const override;
+
+  bool loaded_from_cache() const { return loaded_from_cache_; }
+  // Grid solves done by this object: 0 (loaded from the cache) or 1.
+  int solves_performed() const { return solves_performed_; }
+  const std::string& cache_file() const { return cache_file_; }    // "" without cache
+  const std::string& cache_error() const { return cache_error_; }  // "" if stored fine
+  double solve_seconds() const { return solve_seconds_; }          // 0 if loaded
+  int picard_iterations() const { return picard_iterations_; }
+  int unknowns() const { return unknowns_; }                        // 0 if loaded
+  const StaggeredField& field() const { return field_; }
+  double cell_size_x() const { return field_.grid().hx * geometry_.gap_height(); }  // m
+  double cell_size_y() const { return field_.grid().hy * geometry_.gap_height(); }  // m
+
+  // Process-wide counters (thread-safe): grid flows constructed and grid
+  // solves performed. Used by tests to show what was skipped.
+  static long instances_created();
+  static long total_solves();
+
+ private:
+  ChannelGeometry geometry_;
+  double mean_velocity_;      // U [m/s]
+  double viscosity_;          // mu [Pa s]
+  double inertia_reynolds_;   // Re_H = rho U H / mu used in the solve (0: none)
+  StaggeredField field_;
+  bool loaded_from_cache_ = false;
+  int solves_performed_ = 0;
+  std::string cache_file_, cache_error_;
+  double solve_seconds_ = 0.0;
+  int picard_iterations_ = 0;
+  int unknowns_ = 0;
+};
+
+}  // namespace hsrod

@@ -1,0 +1,39 @@
+// Levels 1-2 of the fidelity ladder (DESIGN.md): local drag laws.
+#pragma once
+
+#include "hydro/hydrodynamic_model.h"
+
+namespace hsrod {
+
+class LocalDragBase : public HydrodynamicModel {
+ public:
+  LocalDragBase(const HydrodynamicParameters& parameters, const ConfinementTable& table);
+
+ protected:
+  HydrodynamicParameters parameters_;
+  ConfinementCoefficients coefficients_;  // at this run's beta
+  double sphere_friction_;      // zeta = 3 pi mu d * sphere_friction(beta) [N s/m]
+  double rotational_friction_;  // pi mu d^3 [N m s]
+  void add_rotation(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const;
+};
+
+// Level 1: every sphere is an isolated confined sphere,
+// F_i = zeta(beta) (lambda(beta) u(x_i) - v_i); free-space Stokes for beta -> 0.
+class IsotropicSphereModel : public LocalDragBase {
+ public:
+  using LocalDragBase::LocalDragBase;
+  std::string name() const override { return "isotropic"; }
+  int level() const override { return 1; }
+  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const override;
+};
+
+// Level 2: confined resistive-force theory along the local tangent.
+class LocalRodModel : public LocalDragBase {
+ public:
+  using LocalDragBase::LocalDragBase;
+  std::string name() const override { return "local"; }
+  int level() const override { return 2; }
+  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const override;
+};
+
+}  // namespace hsrod

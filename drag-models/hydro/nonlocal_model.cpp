@@ -1,0 +1,54 @@
+#include "hydro/nonlocal_model.h"
+
+#include "hydro/brinkman_green.h"
+
+#include <Eigen/Dense>
+
+namespace hsrod {
+
+namespace {
+constexpr double kMidplaneFactor = 1.5;  // mid-plane over gap-averaged velocity of the parabolic profile
+}
+
+NonlocalRodModel::NonlocalRodModel(const HydrodynamicParameters& p, const ConfinementTable& table)
+    : LocalDragBase(p, table) {
+  const double fraction = std::min(1.0, coefficients_.sphere_driving / kMidplaneFactor);
+  obstruction_friction_ = sphere_friction_ * fraction;
+  film_friction_ = sphere_friction_ - obstruction_friction_;
+}
+
+void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
+  const int n = rod.size();
+  out.resize(n);
+  const double zo = obstruction_friction_;
+  // Coupling matrix I + c zeta_o G (in-plane components; z is uncoupled).
+  Eigen::MatrixXd coupling = Eigen::MatrixXd::Identity(3 * n, 3 * n);
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < n; ++k) {
+      if (k == i) continue;
+      const Eigen::Vector2d offset = (rod.positions[i] - rod.positions[k]).head<2>();
+      if (offset.norm() <= 0.0) continue;
+      const Eigen::Matrix2d g =
+          brinkman_green_function(offset, parameters_.viscosity, parameters_.gap_height);
+      coupling.block<2, 2>(3 * i, 3 * k) += kMidplaneFactor * zo * g;
+    }
+  }
+  const Eigen::MatrixXd obstruction = zo * coupling.inverse();
+  Eigen::MatrixXd resistance = obstruction;
+  resistance.diagonal().array() += film_friction_;
+  out.coupled_resistance = 0.5 * (resistance + resistance.transpose());
+
+  Eigen::VectorXd u(3 * n);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d ui = flow.velocity(rod.positions[i].x(), rod.positions[i].y());
+    u.segment<3>(3 * i) = Eigen::Vector3d(ui.x(), ui.y(), 0.0);
+  }
+  const Eigen::VectorXd driving = kMidplaneFactor * (obstruction * u);
+  for (int i = 0; i < n; ++i) {
+    out.driving_force[i] = driving.segment<3>(3 * i);
+    out.resistance[i] = out.coupled_resistance.block<3, 3>(3 * i, 3 * i);
+  }
+  add_rotation(rod, flow, out);
+}
+
+}  // namespace hsrod

@@ -1,0 +1,40 @@
+// Level 3 of the fidelity ladder (DESIGN.md): the spheres of a rod interact
+// through the depth-averaged Brinkman Green's function (brinkman_green.h).
+//
+// Each confined sphere's friction zeta(beta) = 3 pi mu d f(beta) is split
+// into a film part zeta_f, friction with the gap walls that depends on the
+// sphere's own velocity only, and an obstruction part zeta_o, the pressure
+// force of the gap-averaged flow pushed around the sphere:
+//     F_i = -zeta_f v_i + P_i,
+//     P_i = zeta_o (c u_i + c sum_k G(x_i - x_k) (-P_k) - v_i),
+// where c = 3/2 turns gap-averaged velocities into mid-plane ones and -P_k
+// is the force sphere k exerts on the fluid. The split follows from the
+// isolated sphere's force-free velocity lambda(beta) u: zeta_o = zeta
+// lambda / c. Solving for P gives F = c R_o u - (zeta_f + R_o) v with
+// R_o = zeta_o (I + c zeta_o G)^-1: one small dense solve per rod.
+// For a rod across the flow the middle spheres are shielded from the flow
+// going around the ends: the force per sphere is largest in the middle and
+// a flexible rod bends into the C-shape (Cappello et al. 2019), which the
+// local models cannot give.
+#pragma once
+
+#include "hydro/local_models.h"
+
+namespace hsrod {
+
+class NonlocalRodModel : public LocalDragBase {
+ public:
+  NonlocalRodModel(const HydrodynamicParameters& parameters, const ConfinementTable& table);
+  std::string name() const override { return "nonlocal"; }
+  int level() const override { return 3; }
+  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const override;
+
+  double film_friction() const { return film_friction_; }              // zeta_f [N s/m]
+  double obstruction_friction() const { return obstruction_friction_; }  // zeta_o [N s/m]
+
+ private:
+  double film_friction_;
+  double obstruction_friction_;
+};
+
+}  // namespace hsrod

@@ -1,0 +1,41 @@
+#include "hydro/hydrodynamic_model.h"
+
+namespace hsrod {
+
+std::vector<Eigen::Vector3d> RodGeometry::section_tangents() const {
+  const int ns = sections();
+  std::vector<Eigen::Vector3d> centres(ns, Eigen::Vector3d::Zero());
+  for (int i = 0; i < size(); ++i) centres[section_of(i)] += positions[i] / spheres_per_section;
+  std::vector<Eigen::Vector3d> tangents(ns, Eigen::Vector3d::UnitX());
+  for (int s = 0; s < ns; ++s) {
+    const int a = s > 0 ? s - 1 : s;
+    const int b = s + 1 < ns ? s + 1 : s;
+    Eigen::Vector3d t = centres[b] - centres[a];
+    t.z() = 0.0;  // in-plane: the rods lie in the mid-plane of the gap
+    const double norm = t.norm();
+    if (norm > 0.0) tangents[s] = t / norm;
+  }
+  return tangents;
+}
+
+void RodDrag::resize(int n) {
+  resistance.assign(n, Eigen::Matrix3d::Zero());
+  coupled_resistance.resize(0, 0);
+  driving_force.assign(n, Eigen::Vector3d::Zero());
+  rotational_resistance.assign(n, 0.0);
+  driving_torque.assign(n, Eigen::Vector3d::Zero());
+}
+
+Eigen::VectorXd RodDrag::forces(const Eigen::VectorXd& velocities) const {
+  const int n = static_cast<int>(driving_force.size());
+  Eigen::VectorXd f(3 * n);
+  for (int i = 0; i < n; ++i) f.segment<3>(3 * i) = driving_force[i];
+  if (coupled()) {
+    f -= coupled_resistance * velocities;
+  } else {
+    for (int i = 0; i < n; ++i) f.segment<3>(3 * i) -= resistance[i] * velocities.segment<3>(3 * i);
+  }
+  return f;
+}
+
+}  // namespace hsrod

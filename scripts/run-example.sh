@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Builds hsrod and runs the main example, then writes its plot.
+# Builds hsrod and runs the main example: a soft and a stiff rod through a
+# pore constriction (examples/pore-constriction), then plots both.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 bash "$root/scripts/build.sh"
-cd "$root/examples/relaxing-rod"
-rm -f dump_rod_*.vtk relaxation.txt
-"$root/build/hsrod" -in in.relaxing_rod -log log.lammps
-/usr/bin/python3 plot_relaxation.py relaxation.txt relaxation.png
-echo "example done: examples/relaxing-rod/relaxation.png, VTK frames dump_rod_*.vtk (ParaView)"
+cd "$root/examples/pore-constriction"
+rm -f dump_pore_*.vtk
+for E in 15e3 15e6; do
+  "$root/build/hsrod" -in in.pore -var E "$E" -log "log.E$E" -echo none | grep -a "model\|passed"
+done
+/usr/bin/python3 plot_pore.py pore_constriction.png rod_E15e3_a10.csv:"E = 15 kPa" rod_E15e6_a10.csv:"E = 15 MPa"
+echo "example done: examples/pore-constriction/pore_constriction.png, CSV rod_E*_a10.csv, VTK dump_pore_*.vtk (ParaView)"

@@ -15,6 +15,8 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include "rod_gather.h"
+
 #include "rod/beam_bond.h"
 #include "rod/rod_layout.h"
 #include "rod/stability_limits.h"
@@ -77,7 +79,9 @@ FixRodBonds::FixRodBonds(LAMMPS *lmp, int narg, char **arg)
       elastic_energy_(0.0),
       max_strain_(0.0),
       explicit_limit_(0.0),
-      limits_printed_(false) {
+      limits_printed_(false),
+      integrated_implicitly_(false),
+      limits_reported_(false) {
   if (!atom->molecular || !atom->molecule_flag)
     error->all(FLERR, "fix rod/bonds requires an atom style with bonds and molecule IDs "
                       "(atom_style hybrid granular molecular)");
@@ -219,7 +223,15 @@ void FixRodBonds::compute_stability_limits() {
     if (logfile) fprintf(logfile, "%s%s", head, table.c_str());
     limits_printed_ = true;
   }
-  if (update->dt > 0.2 * limits.rayleigh_time && comm->me == 0) {
+  const bool first_report = !limits_reported_;
+  limits_reported_ = true;
+  if (integrated_implicitly_) {
+    if (first_report && comm->me == 0 && screen)
+      fprintf(screen, "fix rod/bonds %s: bonds integrated implicitly (fix rod/implicit): the explicit limits above do "
+                      "not bind this run\n", id);
+    return;
+  }
+  if (update->dt > 0.2 * limits.rayleigh_time && comm->me == 0 && first_report) {
     char msg[256];
     std::snprintf(msg, sizeof(msg),
                   "fix rod/bonds: timestep %g s exceeds 20%% of the Rayleigh time %g s; Hertz contacts "
@@ -244,6 +256,7 @@ void FixRodBonds::setup(int) {
 }
 
 void FixRodBonds::post_integrate() {
+  if (integrated_implicitly_) return;
   // Orientations follow the mid-step angular velocity: q <- exp(dt omega) q.
   const double dt = update->dt;
   double **omega = atom->omega;
@@ -257,6 +270,7 @@ void FixRodBonds::post_integrate() {
 }
 
 void FixRodBonds::post_force(int) {
+  if (integrated_implicitly_) return;
   comm->forward_comm_fix(this);
   compute_bonds();
 }
@@ -333,6 +347,7 @@ void FixRodBonds::compute_bonds() {
         damping = hsrod::BeamBondDamping::critical_fraction(damping_ratio_, stiffness, reduced_mass, reduced_inertia);
       }
       const auto loads = hsrod::evaluate_beam_bond(si, sj, rest, stiffness, damping);
+      if (integrated_implicitly_) continue;  // setup only records rest states
 
       for (int a = 0; a < 3; a++) {
         f[i][a] -= loads.force_on_j[a];
@@ -353,6 +368,27 @@ void FixRodBonds::compute_bonds() {
       max_strain_ = std::max(max_strain_, std::fabs(loads.axial_strain));
     }
   }
+}
+
+Eigen::Quaterniond FixRodBonds::orientation(int i) const { return to_quaternion(orientation_[i]); }
+
+void FixRodBonds::set_orientation(int i, const Eigen::Quaterniond &q) { store_quaternion(q.normalized(), orientation_[i]); }
+
+std::vector<GatheredBond> FixRodBonds::rest_states(int i) {
+  std::vector<GatheredBond> out;
+  BondRestRecord *rec = records(i);
+  for (int r = 0; r < max_bonds_per_sphere; r++) {
+    if (rec[r].partner_tag == 0.0) continue;
+    // Only bonds that are still in the topology.
+    bool present = false;
+    for (int m = 0; m < atom->num_bond[i]; m++)
+      if (atom->bond_atom[i][m] == static_cast<int>(rec[r].partner_tag)) present = true;
+    if (!present) continue;
+    out.push_back({static_cast<int>(rec[r].partner_tag),
+                   Eigen::Vector3d(rec[r].rest_vector[0], rec[r].rest_vector[1], rec[r].rest_vector[2]),
+                   to_quaternion(rec[r].rest_rotation)});
+  }
+  return out;
 }
 
 double FixRodBonds::compute_scalar() {

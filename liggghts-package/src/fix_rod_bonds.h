@@ -20,6 +20,10 @@ FixStyle(rod/bonds,FixRodBonds)
 
 #include "fix.h"
 
+#include <Eigen/Geometry>
+
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class FixRodBonds : public Fix {
@@ -53,6 +57,17 @@ class FixRodBonds : public Fix {
   // Explicit stability limit of the rod's bonds [s] (computed in init()).
   double explicit_bond_limit() const { return explicit_limit_; }
 
+  // Access for fix rod/implicit, which integrates the rods itself.
+  // While set, this fix neither moves orientations nor adds bond loads.
+  void set_integrated_implicitly(bool flag) { integrated_implicitly_ = flag; }
+  Eigen::Quaterniond orientation(int i) const;
+  void set_orientation(int i, const Eigen::Quaterniond &q);
+  // Rest states of the bonds stored on local atom i (partner tag, rest data).
+  std::vector<struct GatheredBond> rest_states(int i);
+  double youngs_modulus() const { return youngs_modulus_; }
+  double poisson_ratio() const { return poisson_ratio_; }
+  double bond_radius_ratio() const { return bond_radius_ratio_; }
+
  private:
   // Rest state of one bond as stored per atom: 8 doubles, see beam_bond.h.
   struct BondRestRecord {
@@ -76,6 +91,8 @@ class FixRodBonds : public Fix {
   double max_strain_;          // largest |axial strain| [-], this proc
   double explicit_limit_;      // [s]
   bool limits_printed_;
+  bool integrated_implicitly_;
+  bool limits_reported_;       // warnings given once per fix, not per run
 
   BondRestRecord *records(int i) { return reinterpret_cast<BondRestRecord *>(bond_rest_[i]); }
   BondRestRecord *find_or_create_record(int i, int j, int partner_tag);

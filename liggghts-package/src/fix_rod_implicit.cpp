@@ -1,0 +1,219 @@
+/* ----------------------------------------------------------------------
+   hsrod - fix rod/implicit (see fix_rod_implicit.h)
+
+   fix ID group rod/implicit bonds BONDS-ID drag DRAG-ID [walls yes|no]
+                             [max_displacement f]
+------------------------------------------------------------------------- */
+
+#include "fix_rod_implicit.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_hele_shaw_drag.h"
+#include "fix_rod_bonds.h"
+#include "force.h"
+#include "group.h"
+#include "modify.h"
+#include "rod_gather.h"
+#include "update.h"
+
+#include "dynamics/overdamped_rod_step.h"
+#include "hydro/hydrodynamic_model.h"
+
+#include <mpi.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <set>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+FixRodImplicit::FixRodImplicit(LAMMPS *lmp, int narg, char **arg)
+    : Fix(lmp, narg, arg),
+      bonds_(nullptr),
+      drag_(nullptr),
+      walls_(true),
+      max_displacement_(0.1),
+      largest_displacement_(0.0),
+      wall_force_(0.0),
+      contacts_(0),
+      warned_(false),
+      reported_(false) {
+  for (int iarg = 3; iarg < narg; iarg += 2) {
+    if (iarg + 1 >= narg) {
+      char msg[128];
+      std::snprintf(msg, sizeof(msg), "Illegal fix rod/implicit command: keyword %s needs a value", arg[iarg]);
+      error->all(FLERR, msg);
+    }
+    const char *key = arg[iarg], *val = arg[iarg + 1];
+    if (strcmp(key, "bonds") == 0 || strcmp(key, "drag") == 0) {
+      const int f = modify->find_fix(val);
+      if (f < 0) {
+        char msg[256];
+        std::snprintf(msg, sizeof(msg), "fix rod/implicit: %s fix '%s' not found (define it before this fix)", key, val);
+        error->all(FLERR, msg);
+      }
+      if (key[0] == 'b') bonds_ = dynamic_cast<FixRodBonds *>(modify->fix[f]);
+      else drag_ = dynamic_cast<FixHeleShawDrag *>(modify->fix[f]);
+      if ((key[0] == 'b' && !bonds_) || (key[0] == 'd' && !drag_)) {
+        char msg[256];
+        std::snprintf(msg, sizeof(msg), "fix rod/implicit: fix '%s' is not a %s fix", val,
+                      key[0] == 'b' ? "rod/bonds" : "hele_shaw/drag");
+        error->all(FLERR, msg);
+      }
+    } else if (strcmp(key, "walls") == 0) {
+      if (strcmp(val, "yes") != 0 && strcmp(val, "no") != 0) error->all(FLERR, "fix rod/implicit: walls expects yes or no");
+      walls_ = strcmp(val, "yes") == 0;
+    } else if (strcmp(key, "max_displacement") == 0) {
+      max_displacement_ = std::atof(val);
+      if (!(max_displacement_ > 0.0)) error->all(FLERR, "fix rod/implicit: max_displacement must be > 0 (fraction of d)");
+    } else {
+      char msg[256];
+      std::snprintf(msg, sizeof(msg),
+                    "Illegal fix rod/implicit command: unknown keyword '%s' (expected bonds, drag, walls, "
+                    "max_displacement)", key);
+      error->all(FLERR, msg);
+    }
+  }
+  if (!bonds_) error->all(FLERR, "Illegal fix rod/implicit command: missing required keyword bonds");
+  if (!drag_) error->all(FLERR, "Illegal fix rod/implicit command: missing required keyword drag");
+  bonds_->set_integrated_implicitly(true);
+  drag_->set_applied_by_integrator(true);
+  time_integrate = 1;
+  vector_flag = 1;
+  size_vector = 3;  // [1] largest displacement per step / d, [2] wall force [N], [3] rods touching walls
+  extvector = 0;
+  global_freq = 1;
+}
+
+int FixRodImplicit::setmask() { return INITIAL_INTEGRATE; }
+
+void FixRodImplicit::init() {
+  // No other integrator may move these atoms.
+  for (int f = 0; f < modify->nfix; f++) {
+    Fix *other = modify->fix[f];
+    if (other == this || !other->time_integrate) continue;
+    int shared = 0, any = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) shared = 1;
+    MPI_Allreduce(&shared, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any) {
+      char msg[256];
+      std::snprintf(msg, sizeof(msg), "fix rod/implicit: fix %s (%s) also integrates atoms of this group; remove it",
+                    other->id, other->style);
+      error->all(FLERR, msg);
+    }
+  }
+}
+
+void FixRodImplicit::setup(int) {
+  if (reported_) return;
+  reported_ = true;
+  if (comm->me == 0) {
+    char msg[512];
+    std::snprintf(msg, sizeof(msg),
+                  "fix rod/implicit: overdamped linearly implicit step dt = %g s; bonds, drag and wall contacts "
+                  "implicit (explicit bond limit %g s: dt is %.0f x larger)\n",
+                  update->dt, bonds_->explicit_bond_limit(),
+                  bonds_->explicit_bond_limit() > 0 ? update->dt / bonds_->explicit_bond_limit() : 0.0);
+    if (screen) fputs(msg, screen);
+    if (logfile) fputs(msg, logfile);
+  }
+  if (force->pair && comm->me == 0)
+    error->warning(FLERR, "fix rod/implicit: pair forces (rod-rod contacts) enter explicitly; keep the timestep "
+                          "below the contact limit");
+}
+
+void FixRodImplicit::initial_integrate(int) {
+  RodGather gather(lmp);
+  gather.gather(groupbit, bonds_);
+  const double dt = update->dt;
+  hsrod::WallContactParameters walls;
+  walls.youngs_modulus = bonds_->youngs_modulus();
+  walls.poisson_ratio = bonds_->poisson_ratio();
+  walls.gap_bottom = drag_->gap_bottom();
+
+  double largest = 0.0, wall_force = 0.0;
+  int contacts = 0;
+  for (const auto &entry : gather.rods) {
+    const std::vector<GatheredSphere> &spheres = entry.second;
+    const int n = static_cast<int>(spheres.size());
+    std::map<int, int> index;
+    for (int k = 0; k < n; k++) index[spheres[k].tag] = k;
+
+    hsrod::OverdampedRod rod;
+    for (const auto &s : spheres) {
+      rod.positions.push_back(s.position);
+      rod.orientations.push_back(s.orientation);
+      rod.radii.push_back(s.radius);
+      rod.external_forces.push_back(s.force);
+      rod.external_torques.push_back(s.torque);
+    }
+    std::set<std::pair<int, int>> seen;
+    for (int k = 0; k < n; k++) {
+      for (const GatheredBond &b : spheres[k].bonds) {
+        auto partner = index.find(b.partner_tag);
+        if (partner == index.end()) continue;  // bonded to another group: not this rod
+        const auto key = std::make_pair(std::min(spheres[k].tag, b.partner_tag), std::max(spheres[k].tag, b.partner_tag));
+        if (!seen.insert(key).second) continue;  // newton_bond off stores bonds twice
+        hsrod::RodBond bond;
+        bond.i = k;
+        bond.j = partner->second;
+        bond.rest.rest_vector_in_frame_i = b.rest_vector;
+        bond.rest.rest_relative_rotation = b.rest_rotation;
+        const double bond_d = 2.0 * bonds_->bond_radius_ratio() * std::min(spheres[k].radius, spheres[bond.j].radius);
+        const hsrod::BeamBondMaterial material{bonds_->youngs_modulus(), bonds_->poisson_ratio(), bond_d, 0.0};
+        bond.stiffness = hsrod::BeamBondStiffness::from_material(material, bond.rest.rest_length());
+        rod.bonds.push_back(bond);
+      }
+    }
+
+    hsrod::RodGeometry geometry;
+    geometry.positions = rod.positions;
+    geometry.sphere_diameter = 2.0 * spheres.front().radius;
+    geometry.spheres_per_section = drag_->section_size();
+    hsrod::RodDrag drag;
+    drag_->model().evaluate(geometry, drag_->flow(), drag);
+
+    const std::vector<Eigen::Vector3d> before = rod.positions;
+    const auto result = hsrod::overdamped_rod_step(rod, drag, dt, walls_ ? &drag_->geometry() : nullptr,
+                                                   walls_ ? &walls : nullptr);
+    largest = std::max(largest, result.largest_displacement / geometry.sphere_diameter);
+    wall_force += result.wall_force;
+    if (result.wall_contact) contacts++;
+
+    for (int k = 0; k < n; k++) {
+      const int i = atom->map(spheres[k].tag);
+      if (i < 0 || i >= atom->nlocal) continue;
+      const Eigen::Vector3d dx = rod.positions[k] - before[k];
+      for (int a = 0; a < 3; a++) {
+        atom->x[i][a] += dx[a];
+        atom->v[i][a] = result.velocities[k][a];
+        atom->omega[i][a] = result.angular_velocities[k][a];
+      }
+      bonds_->set_orientation(i, rod.orientations[k]);
+      drag_->store_force(i, result.hydrodynamic_forces[k].data());
+    }
+  }
+  largest_displacement_ = largest;
+  wall_force_ = wall_force;
+  contacts_ = contacts;
+  if (largest > max_displacement_ && !warned_ && comm->me == 0) {
+    char msg[256];
+    std::snprintf(msg, sizeof(msg),
+                  "fix rod/implicit: a sphere moved %.3g diameters in one step (> max_displacement %.3g): the step "
+                  "is stable but may be inaccurate; reduce the timestep", largest, max_displacement_);
+    error->warning(FLERR, msg);
+    warned_ = true;
+  }
+}
+
+double FixRodImplicit::compute_vector(int n) {
+  if (n == 0) return largest_displacement_;
+  if (n == 1) return wall_force_;
+  return contacts_;
+}

@@ -1,0 +1,46 @@
+/* ----------------------------------------------------------------------
+   hsrod - fix rod/implicit: overdamped, linearly implicit integrator for
+   rods (bonds, drag and wall contacts implicit; other forces explicit).
+   Step in drag-models/dynamics/overdamped_rod_step.h; this fix gathers
+   each rod, calls it, and scatters positions, velocities, orientations.
+   Doc: doc/fix_rod_implicit.txt
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+
+FixStyle(rod/implicit,FixRodImplicit)
+
+#else
+
+#ifndef LMP_FIX_ROD_IMPLICIT_H
+#define LMP_FIX_ROD_IMPLICIT_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixRodImplicit : public Fix {
+ public:
+  FixRodImplicit(class LAMMPS *, int, char **);
+  int setmask();
+  void init();
+  void setup(int);
+  void initial_integrate(int);
+  double compute_vector(int);
+
+ private:
+  class FixRodBonds *bonds_;
+  class FixHeleShawDrag *drag_;
+  bool walls_;                    // contacts with the scene's walls
+  double max_displacement_;       // accuracy warning threshold, fraction of d per step [-]
+  double largest_displacement_;   // last step, max |dx| / d [-]
+  double wall_force_;             // last step, sum of wall contact forces [N]
+  int contacts_;                  // last step, number of rods touching a wall
+  bool warned_;
+  bool reported_;                // set-up report printed once, not per run
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -2,6 +2,9 @@
 
 #include "rod/stability_limits.h"
 
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
 #include <vector>
 
 namespace hsrod {
@@ -58,6 +61,77 @@ Eigen::VectorXd rod_mass_diagonal(const RodLayout& layout, const SphereMaterial&
     mass.segment<3>(6 * s + 3).setConstant(sphere.moment_of_inertia());
   }
   return mass;
+}
+
+}  // namespace hsrod
+
+namespace hsrod {
+
+Eigen::MatrixXd linearised_bond_damping(const RodLayout& layout, const BeamBondMaterial& bond,
+                                        const SphereMaterial& sphere) {
+  const int n = static_cast<int>(layout.spheres.size());
+  const int ndof = 6 * n;
+  Eigen::MatrixXd damping = Eigen::MatrixXd::Zero(ndof, ndof);
+  const double reduced_mass = 0.5 * sphere.mass();
+  const double reduced_inertia = 0.5 * sphere.moment_of_inertia();
+  for (const auto& b : layout.bonds) {
+    const auto& xi = layout.spheres[b.first].position;
+    const auto& xj = layout.spheres[b.second].position;
+    const BeamBondRest rest = BeamBondRest::from_current(xi, Eigen::Quaterniond::Identity(), xj,
+                                                         Eigen::Quaterniond::Identity());
+    const auto k = BeamBondStiffness::from_material(bond, rest.rest_length());
+    const auto c = BeamBondDamping::critical_fraction(bond.damping_ratio, k, reduced_mass, reduced_inertia);
+    const int base[2] = {6 * b.first, 6 * b.second};
+    // Loads are linear in the velocities: unit velocity columns.
+    for (int col = 0; col < 12; ++col) {
+      SphereState si, sj;
+      si.position = xi;
+      sj.position = xj;
+      SphereState& s = col < 6 ? si : sj;
+      if (col % 6 < 3) s.velocity[col % 6] = 1.0;
+      else s.angular_velocity[col % 6 - 3] = 1.0;
+      const auto out = evaluate_beam_bond(si, sj, rest, k, c);
+      Eigen::Matrix<double, 12, 1> loads;
+      loads << -out.force_on_j, out.torque_on_i, out.force_on_j, out.torque_on_j;
+      for (int row = 0; row < 12; ++row) damping(base[row / 6] + row % 6, base[col / 6] + col % 6) -= loads[row];
+    }
+  }
+  return damping;
+}
+
+double velocity_verlet_limit(const Eigen::MatrixXd& stiffness, const Eigen::MatrixXd& damping,
+                             const Eigen::VectorXd& mass_diagonal) {
+  const int n = static_cast<int>(stiffness.rows());
+  // Mass-normalised operators M^-1/2 K M^-1/2, M^-1/2 C M^-1/2.
+  const Eigen::VectorXd s = mass_diagonal.cwiseSqrt().cwiseInverse();
+  const Eigen::MatrixXd k = s.asDiagonal() * stiffness * s.asDiagonal();
+  const Eigen::MatrixXd c = s.asDiagonal() * damping * s.asDiagonal();
+  const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(n, n);
+  // One step in dimensionless variables (x, V = dt v, A = dt^2 a), a = the
+  // acceleration of the previous force evaluation:
+  //   V' = V + A/2;  x+ = x + V';  A+ = -dt^2 k x+ - dt c V';  V+ = V' + A+/2.
+  auto spectral_radius = [&](double dt) {
+    Eigen::MatrixXd vprime(n, 3 * n), xplus(n, 3 * n);
+    vprime << Eigen::MatrixXd::Zero(n, n), identity, 0.5 * identity;
+    xplus << identity, identity, 0.5 * identity;
+    const Eigen::MatrixXd aplus = -dt * dt * k * xplus - dt * c * vprime;
+    const Eigen::MatrixXd vplus = vprime + 0.5 * aplus;
+    Eigen::MatrixXd map(3 * n, 3 * n);
+    map << xplus, vplus, aplus;
+    Eigen::EigenSolver<Eigen::MatrixXd> eig(map, false);
+    return eig.eigenvalues().cwiseAbs().maxCoeff();
+  };
+  // The undamped limit 2/omega_max bounds the damped one from above.
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> undamped(0.5 * (k + k.transpose()), Eigen::EigenvaluesOnly);
+  double hi = 2.0 / std::sqrt(undamped.eigenvalues().maxCoeff()) * 1.001;
+  double lo = 0.0;
+  for (int it = 0; it < 40 && hi - lo > 1e-4 * hi; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    // Rigid-body modes are defective eigenvalues 1: allow their O(sqrt(eps)) spread.
+    if (spectral_radius(mid) <= 1.0 + 1e-6) lo = mid;
+    else hi = mid;
+  }
+  return lo;
 }
 
 }  // namespace hsrod

@@ -26,7 +26,8 @@ struct RodStabilityLimits {
   double bending_bond_time = 0.0;    // sqrt(I_s / k_b) [s]
   double stokes_relaxation_time = 0.0;  // m / (3 pi mu d) [s], 0 when no viscosity given
   double highest_bond_frequency = 0.0;  // omega_max of the linearised rod [rad/s]
-  // Velocity-Verlet is unstable above 2 / omega_max for the undamped bonds.
+  // Velocity Verlet (fix nve/sphere) is unstable above this step: 2 / omega_max
+  // for undamped bonds, lower with bond damping (see velocity_verlet_limit).
   double explicit_bond_limit = 0.0;  // [s]
 
   // A human-readable table (one line per limit) for the run's log.

@@ -52,6 +52,7 @@ class FixHeleShawDrag : public Fix {
   const hsrod::HydrodynamicModel &model() const { return *model_; }
   double gap_bottom() const { return gap_bottom_; }    // z of the lower gap wall [m]
   int section_size() const { return section_size_; }
+  double explicit_drag_limit() const { return explicit_limit_; }  // 2 m / zeta_max [s]
   // Stores the hydrodynamic force on local atom i for output.
   void store_force(int i, const double *force);
 

@@ -12,6 +12,7 @@
 #include <mpi.h>
 
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -24,6 +25,9 @@ int main(int argc, char **argv) {
   sigaction(SIGINT, &int_action, nullptr);
   sigaction(SIGTERM, &int_action, nullptr);
 
+  // Line-buffered screen output: an ERROR printed just before MPI_Abort
+  // must reach a pipe or a log collector, not die in a buffer.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   MPI_Init(&argc, &argv);
   LAMMPS *lammps = new LAMMPS(argc, argv, MPI_COMM_WORLD);
   hsrod::register_styles(lammps);

@@ -1,0 +1,159 @@
+// Benchmarks of the reduced model (programs, not tests): wall time of one
+// rod passage through the paper's pore scene for each drag level, printed
+// beside its error and beside the same scene integrated explicitly (stock
+// LIGGGHTS style: nve/sphere, explicit bonds and drag) at its stability
+// limit; and the cost per sphere-step against the number of spheres.
+//
+// Error reference: no resolved run exists yet for this scene, so errors are
+// against the highest reduced level (level 3) at a 10x smaller step; the
+// explicit baseline is compared with the implicit run of the same level.
+// Run: build/tests/benchmarks/bench_pore_passage --benchmark_repetitions=5
+//      --benchmark_report_aggregates_only=true  (medians of several runs)
+#include "liggghts_session.h"
+
+#include "compute.h"
+#include "fix_hele_shaw_drag.h"
+#include "fix_rod_bonds.h"
+
+#include <benchmark/benchmark.h>
+#include <mpi.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+
+using hsrod_test::LiggghtsSession;
+
+namespace {
+
+constexpr double kPassage = 4.4e-3;  // [s] rod from x = 150 um to ~520 um
+constexpr double kD = 3e-6;
+
+std::string num(double value) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.17g", value);
+  return buf;
+}
+
+struct Outcome {
+  double x, angle, lateral;
+};
+
+Outcome measure(LiggghtsSession &s) {
+  auto *modify = s.lammps()->modify;
+  auto *c = modify->compute[modify->find_compute("shape")];
+  c->compute_array();
+  return {c->array[0][1], c->array[0][6], c->array[0][8]};
+}
+
+std::vector<std::string> pore_header() {
+  return {"units si", "atom_style hybrid granular molecular", "atom_modify map array sort 0 0", "boundary f f f",
+          "newton off", "communicate single cutoff 1e-5 vel yes",
+          "region box block 0 600e-6 0 200e-6 0 20e-6 units box", "create_box 1 box",
+          "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 150e-6 100e-6 10e-6 angle 10",
+          "fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3 damping 0.1 timestep_check no"};
+}
+
+std::string drag_fix(const std::string &model, bool check) {
+  return "fix drag all hele_shaw/drag channel 600e-6 200e-6 20e-6 origin 0 0 0 pore 85e-6 300e-6 viscosity 1e-3 "
+         "fluid_density 1170 reynolds 2 model " + model + (check ? "" : " timestep_check no");
+}
+
+Outcome implicit_passage(const std::string &model, double dt) {
+  LiggghtsSession s;
+  s.commands(pore_header());
+  s.commands({drag_fix(model, true), "fix step all rod/implicit bonds bonds drag drag",
+              "compute shape all rod/shape channel_width 200e-6 channel_centre 100e-6", "timestep " + num(dt),
+              "run " + std::to_string(std::lround(kPassage / dt))});
+  return measure(s);
+}
+
+const Outcome &reference() {
+  static const Outcome ref = implicit_passage("nonlocal", 4e-7);
+  return ref;
+}
+
+void report_error(benchmark::State &state, const Outcome &got, const Outcome &ref) {
+  state.counters["err_x_d"] = std::fabs(got.x - ref.x) / kD;
+  state.counters["err_angle_deg"] = std::fabs(got.angle - ref.angle);
+  state.counters["err_lateral_W"] = std::fabs(got.lateral - ref.lateral);
+}
+
+void BM_ImplicitPassage(benchmark::State &state, const std::string model) {
+  const double dt = 4e-6;
+  reference();
+  Outcome got{};
+  for (auto _ : state) got = implicit_passage(model, dt);
+  report_error(state, got, reference());
+  state.counters["steps"] = std::lround(kPassage / dt);
+  state.counters["dt_s"] = dt;
+}
+
+// Stock-LIGGGHTS style: velocity Verlet with explicit bonds and drag at
+// 0.9 of the smaller of the bond and drag stability limits.
+void BM_ExplicitPassage(benchmark::State &state, const std::string model) {
+  Outcome got{};
+  double dt = 0.0;
+  for (auto _ : state) {
+    LiggghtsSession s;
+    s.commands(pore_header());
+    s.commands({drag_fix(model, false), "fix nve all nve/sphere",
+                "compute shape all rod/shape channel_width 200e-6 channel_centre 100e-6", "timestep 1e-9", "run 0"});
+    auto *bonds = dynamic_cast<LAMMPS_NS::FixRodBonds *>(s.fix("bonds"));
+    auto *drag = dynamic_cast<LAMMPS_NS::FixHeleShawDrag *>(s.fix("drag"));
+    dt = 0.9 * std::min(bonds->explicit_bond_limit(), drag->explicit_drag_limit());
+    s.command("timestep " + num(dt));
+    s.command("run " + std::to_string(std::lround(kPassage / dt)));
+    got = measure(s);
+  }
+  report_error(state, got, implicit_passage(model, 4e-7));
+  state.counters["steps"] = std::lround(kPassage / dt);
+  state.counters["dt_s"] = dt;
+}
+
+// Cost per sphere-step of the implicit step against N (straight channel:
+// no grid), for the local levels.
+void BM_CostPerSphereStep(benchmark::State &state, const std::string model) {
+  const int n = static_cast<int>(state.range(0));
+  const double length = (n + 20) * kD;
+  const int steps = 50;
+  for (auto _ : state) {
+    state.PauseTiming();
+    LiggghtsSession s;
+    s.commands({"units si", "atom_style hybrid granular molecular", "atom_modify map array sort 0 0",
+                "boundary f f f", "newton off", "communicate single cutoff 1e-5 vel yes",
+                "region box block 0 " + num(3 * length) + " 0 " + num(length) + " 0 20e-6 units box",
+                "create_box 1 box",
+                "create_rod spheres " + std::to_string(n) + " diameter 3e-6 type 1 density 1170 centre " +
+                    num(0.5 * length) + " " + num(0.5 * length) + " 10e-6 angle 45",
+                "fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3",
+                "fix drag all hele_shaw/drag mean_velocity 0.03 viscosity 1e-3 model " + model,
+                "fix step all rod/implicit bonds bonds drag drag", "timestep 4e-6", "run 0"});
+    state.ResumeTiming();
+    s.command("run " + std::to_string(steps) + " pre no post no");
+  }
+  // elapsed / (sphere-steps * 1e-6) = microseconds per sphere-step
+  state.counters["us_per_sphere_step"] =
+      benchmark::Counter(1e-6 * static_cast<double>(state.iterations()) * n * steps,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_ImplicitPassage, level1_isotropic, std::string("isotropic"))->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_ImplicitPassage, level2_local, std::string("local"))->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_ImplicitPassage, level3_nonlocal, std::string("nonlocal"))->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_ExplicitPassage, level2_explicit_at_limit, std::string("local"))->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_CostPerSphereStep, level1_isotropic, std::string("isotropic"))->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_CostPerSphereStep, level2_local, std::string("local"))->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+int main(int argc, char **argv) {
+  MPI_Init(&argc, &argv);
+  setenv("HSROD_CACHE_DIR", HSROD_TEST_CACHE_DIR, 0);
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  MPI_Finalize();
+  return 0;
+}

@@ -20,6 +20,8 @@
 #include "memory.h"
 #include "update.h"
 
+#include "rod_gather.h"
+
 #include "rod/rod_measures.h"
 
 #include <mpi.h>
@@ -35,12 +37,6 @@
 using namespace LAMMPS_NS;
 
 namespace {
-
-// One sphere as gathered from all procs.
-struct SphereRecord {
-  double molecule, tag, x, y, z, vx, vy, mass;
-};
-const int record_size = sizeof(SphereRecord) / sizeof(double);
 
 double number(Error *error, const char *keyword, const char *text) {
   char *end = nullptr;
@@ -134,36 +130,11 @@ void ComputeRodShape::measure() {
   if (last_step_ == update->ntimestep) return;
   last_step_ = update->ntimestep;
 
-  // Gather every sphere of every rod (unwrapped positions) on all procs:
-  // rods are small and the compute runs only at output steps.
-  std::vector<double> mine;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit) || atom->molecule[i] <= 0) continue;
-    double unwrapped[3];
-    domain->unmap(atom->x[i], atom->image[i], unwrapped);
-    const SphereRecord r = {static_cast<double>(atom->molecule[i]), static_cast<double>(atom->tag[i]),
-                            unwrapped[0], unwrapped[1], unwrapped[2], atom->v[i][0], atom->v[i][1],
-                            atom->rmass[i]};
-    const double *p = reinterpret_cast<const double *>(&r);
-    mine.insert(mine.end(), p, p + record_size);
-  }
-  int n = static_cast<int>(mine.size());
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < comm->nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<double> all(std::max(total, 1));
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
-
-  std::map<int, std::vector<SphereRecord>> rods;
-  for (int k = 0; k < total / record_size; k++) {
-    SphereRecord r;
-    std::memcpy(&r, &all[k * record_size], sizeof(r));
-    rods[static_cast<int>(r.molecule)].push_back(r);
-  }
+  // Whole rods (unwrapped positions) on every proc: rods are small and the
+  // compute runs only at output steps.
+  RodGather gather(lmp);
+  gather.gather(groupbit, nullptr);
+  auto &rods = gather.rods;
 
   for (size_t row = 0; row < rod_ids_.size(); row++) {
     double *out = array[row];
@@ -171,23 +142,20 @@ void ComputeRodShape::measure() {
     out[ROD_ID] = rod_ids_[row];
     auto it = rods.find(rod_ids_[row]);
     if (it == rods.end()) continue;
-    auto &spheres = it->second;
-    std::sort(spheres.begin(), spheres.end(), [](const SphereRecord &a, const SphereRecord &b) { return a.tag < b.tag; });
+    const auto &spheres = it->second;  // sorted by ID
     double mass = 0.0, com[3] = {0, 0, 0}, vel[2] = {0, 0};
     for (const auto &s : spheres) {
       mass += s.mass;
-      com[0] += s.mass * s.x;
-      com[1] += s.mass * s.y;
-      com[2] += s.mass * s.z;
-      vel[0] += s.mass * s.vx;
-      vel[1] += s.mass * s.vy;
+      for (int a = 0; a < 3; a++) com[a] += s.mass * s.position[a];
+      vel[0] += s.mass * s.velocity.x();
+      vel[1] += s.mass * s.velocity.y();
     }
     // Section centres (spheres ordered section by section, as create_rod makes them).
     std::vector<Eigen::Vector2d> centres;
     const int nsec = static_cast<int>(spheres.size()) / section_size_;
     for (int s = 0; s < nsec; s++) {
       Eigen::Vector2d c(0, 0);
-      for (int k = 0; k < section_size_; k++) c += Eigen::Vector2d(spheres[s * section_size_ + k].x, spheres[s * section_size_ + k].y);
+      for (int k = 0; k < section_size_; k++) c += spheres[s * section_size_ + k].position.head<2>();
       centres.push_back(c / section_size_);
     }
     out[COM_X] = com[0] / mass;

@@ -125,6 +125,8 @@ void BM_CostPerSphereStep(benchmark::State &state, const std::string model) {
                 "boundary f f f", "newton off", "communicate single cutoff 1e-5 vel yes",
                 "region box block 0 " + num(3 * length) + " 0 " + num(length) + " 0 20e-6 units box",
                 "create_box 1 box",
+                // No pair style: nsq avoids binning a metre-scale skin over a 20 um gap.
+                "neighbor 1e-4 nsq",
                 "create_rod spheres " + std::to_string(n) + " diameter 3e-6 type 1 density 1170 centre " +
                     num(0.5 * length) + " " + num(0.5 * length) + " 10e-6 angle 45",
                 "fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3",

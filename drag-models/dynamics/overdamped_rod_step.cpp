@@ -4,6 +4,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 
+#include <algorithm>
 #include <cmath>
 
 namespace hsrod {
@@ -123,6 +124,37 @@ OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag
       rhs.segment<3>(6 * i) += c.force;
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b) triplets.emplace_back(6 * i + a, 6 * i + b, c.stiffness(a, b));
+    }
+  }
+
+  // Non-bonded spheres of the rod touching each other (a folding rod).
+  if (walls && walls->self_contact && n > 2) {
+    std::vector<std::vector<int>> bonded(n);
+    for (const RodBond& b : rod.bonds) {
+      bonded[b.i].push_back(b.j);
+      bonded[b.j].push_back(b.i);
+    }
+    double largest_radius = 0.0;
+    for (double r : rod.radii) largest_radius = std::max(largest_radius, r);
+    const double reach = 2.0 * largest_radius;
+    for (int i = 0; i < n; ++i) {
+      for (int j = i + 1; j < n; ++j) {
+        const Eigen::Vector3d offset = rod.positions[i] - rod.positions[j];
+        if (std::fabs(offset.x()) > reach || std::fabs(offset.y()) > reach) continue;
+        if (std::find(bonded[i].begin(), bonded[i].end(), j) != bonded[i].end()) continue;
+        const WallContact c = sphere_contact(*walls, rod.positions[i], rod.radii[i], rod.positions[j], rod.radii[j]);
+        if (!c.touching) continue;
+        result.self_contact = true;
+        rhs.segment<3>(6 * i) += c.force;
+        rhs.segment<3>(6 * j) -= c.force;
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) {
+            triplets.emplace_back(6 * i + a, 6 * i + b, c.stiffness(a, b));
+            triplets.emplace_back(6 * j + a, 6 * j + b, c.stiffness(a, b));
+            triplets.emplace_back(6 * i + a, 6 * j + b, -c.stiffness(a, b));
+            triplets.emplace_back(6 * j + a, 6 * i + b, -c.stiffness(a, b));
+          }
+      }
     }
   }
 

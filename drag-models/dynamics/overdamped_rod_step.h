@@ -50,6 +50,7 @@ struct OverdampedStepResult {
   std::vector<Eigen::Vector3d> hydrodynamic_forces;  // F_hyd at the new velocities [N]
   double largest_displacement = 0.0;              // max |dx| [m]
   bool wall_contact = false;
+  bool self_contact = false;                      // non-bonded spheres of the rod touched
   double wall_force = 0.0;                        // sum of |contact force| [N]
 };
 

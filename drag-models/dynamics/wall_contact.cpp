@@ -15,6 +15,18 @@ void add_hertz(WallContact& c, double effective_modulus, double radius, double d
 }
 }  // namespace
 
+WallContact sphere_contact(const WallContactParameters& p, const Eigen::Vector3d& xi, double ri,
+                           const Eigen::Vector3d& xj, double rj) {
+  WallContact c;
+  const Eigen::Vector3d offset = xi - xj;
+  const double distance = offset.norm();
+  const double overlap = ri + rj - distance;
+  if (overlap <= 0.0 || distance <= 0.0) return c;
+  const double pair_modulus = 0.5 * p.effective_modulus();  // two equal elastic spheres
+  add_hertz(c, pair_modulus, ri * rj / (ri + rj), overlap, offset / distance);
+  return c;
+}
+
 WallContact wall_contact(const ChannelGeometry& geometry, const WallContactParameters& p, const Eigen::Vector3d& x,
                          double radius) {
   WallContact c;

@@ -19,6 +19,7 @@ struct WallContactParameters {
   double gap_bottom = 0.0;      // z of the lower gap wall [m]
   bool planform_walls = true;   // side walls and obstacles
   bool gap_walls = true;        // the two walls bounding the gap
+  bool self_contact = true;     // non-bonded spheres of one rod touch (a folding rod)
   double effective_modulus() const { return youngs_modulus / (1.0 - poisson_ratio * poisson_ratio); }
 };
 
@@ -27,6 +28,12 @@ struct WallContact {
   Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();   // -dF/dx [N/m]
   bool touching = false;
 };
+
+// Hertz contact between two spheres of one rod (E* = E / (2 (1 - nu^2)),
+// R* = r_i r_j / (r_i + r_j)): the force on sphere i (on j: minus it) and the
+// stiffness -dF_i/dx_i. Zero when they do not overlap.
+WallContact sphere_contact(const WallContactParameters& parameters, const Eigen::Vector3d& centre_i, double radius_i,
+                           const Eigen::Vector3d& centre_j, double radius_j);
 
 WallContact wall_contact(const ChannelGeometry& geometry, const WallContactParameters& parameters,
                          const Eigen::Vector3d& centre, double radius);

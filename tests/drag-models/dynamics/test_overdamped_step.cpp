@@ -142,3 +142,44 @@ TEST(OverdampedStep, WallContactStopsASphereAtTheWall) {
   const double delta = std::pow(1e-9 / (4.0 / 3.0 * e_star * std::sqrt(1.5e-6)), 2.0 / 3.0);
   EXPECT_NEAR(rod.positions[0].y(), 1.5e-6 - delta, 1e-3 * delta);
 }
+
+TEST(OverdampedStep, NonBondedSpheresOfOneRodTouchWithHertz) {
+  // A rod folded back on itself: spheres 0 and 2 of a 3-sphere "rod" bonded
+  // 0-1 and 1-2 only are pressed together; they settle at the Hertz overlap
+  // for the push, while a bonded pair feels no contact.
+  WallContactParameters contact;
+  contact.youngs_modulus = 15e6;
+  contact.planform_walls = contact.gap_walls = false;
+  OverdampedRod rod;
+  rod.positions = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(3e-6, 0, 0), Eigen::Vector3d(0, 3.2e-6, 0)};
+  rod.orientations.assign(3, Eigen::Quaterniond::Identity());
+  rod.radii.assign(3, 1.5e-6);
+  const double push = 1e-9;  // [N]
+  rod.external_forces = {Eigen::Vector3d(0, push, 0), Eigen::Vector3d::Zero(), Eigen::Vector3d(0, -push, 0)};
+  rod.external_torques.assign(3, Eigen::Vector3d::Zero());
+  RodDrag drag;
+  drag.resize(3);
+  for (int i = 0; i < 3; ++i) {
+    drag.resistance[i] = 3 * kPi * 1e-3 * 3e-6 * Eigen::Matrix3d::Identity();
+    drag.rotational_resistance[i] = kPi * 1e-3 * 27e-18;
+  }
+  // Only sphere 0 and 2 interact (no bonds at all here: 1 is far from both after this).
+  rod.positions[1] = Eigen::Vector3d(1e-4, 0, 0);
+  OverdampedStepResult last;
+  for (int k = 0; k < 3000; ++k) last = overdamped_rod_step(rod, drag, 1e-5, nullptr, &contact);
+  EXPECT_TRUE(last.self_contact);
+  const double e_pair = 0.5 * 15e6 / (1 - 0.09);
+  const double r_star = 0.75e-6;
+  const double delta = std::pow(push / (4.0 / 3.0 * e_pair * std::sqrt(r_star)), 2.0 / 3.0);
+  const double gap = (rod.positions[2] - rod.positions[0]).norm();
+  EXPECT_NEAR(gap, 3e-6 - delta, 1e-3 * delta);
+
+  // Bonded spheres closer than a diameter feel no contact.
+  OverdampedRod bonded = rod;
+  bonded.bonds.push_back({0, 2, BeamBondRest::from_current(rod.positions[0], rod.orientations[0], rod.positions[2],
+                                                           rod.orientations[2]),
+                          BeamBondStiffness{}});
+  bonded.external_forces.assign(3, Eigen::Vector3d::Zero());
+  const auto r = overdamped_rod_step(bonded, drag, 1e-5, nullptr, &contact);
+  EXPECT_FALSE(r.self_contact);
+}

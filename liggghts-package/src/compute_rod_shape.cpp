@@ -2,12 +2,15 @@
    hsrod - compute rod/shape (see compute_rod_shape.h)
 
    compute ID group rod/shape [channel_width W] [channel_centre yc]
-                              [mean_velocity U] [section S]
+                              [mean_velocity U] [section S] [contacts FIX-ID]
+                              [pass_x X] [clog_velocity f]
    Global array: one row per rod, columns (1-based, as thermo sees them):
      1 rod (molecule) ID, 2-4 centre of mass [m], 5-6 velocity x y [m/s],
      7 angle, eq. (1) [deg], 8 relative deflection, eq. (2) [-],
      9 lateral displacement (y_com - yc)/W [-], 10 v_x / U [-],
-     11 number of spheres.
+     11 number of spheres, 12 wall contact now (0/1), 13 wall contact
+     force [N], 14 outcome: 0 en route, 1 passed without contact, 2 passed
+     with contact, 3 clogged (columns 12-14 need `contacts FIX-ID`).
    Global vector: the row of the first rod.
 ------------------------------------------------------------------------- */
 
@@ -20,6 +23,8 @@
 #include "memory.h"
 #include "update.h"
 
+#include "fix_rod_implicit.h"
+#include "modify.h"
 #include "rod_gather.h"
 
 #include "rod/rod_measures.h"
@@ -52,7 +57,14 @@ double number(Error *error, const char *keyword, const char *text) {
 }  // namespace
 
 ComputeRodShape::ComputeRodShape(LAMMPS *lmp, int &iarg, int narg, char **arg)
-    : Compute(lmp, iarg, narg, arg), mean_velocity_(0.0), section_size_(1), last_step_(-1) {
+    : Compute(lmp, iarg, narg, arg),
+      mean_velocity_(0.0),
+      section_size_(1),
+      contacts_(nullptr),
+      pass_x_(0.0),
+      clog_velocity_(0.01),
+      last_step_(-1) {
+  pass_x_ = domain->boxhi[0];
   if (!atom->molecule_flag) error->all(FLERR, "compute rod/shape requires molecule IDs (atom_style ... molecular)");
   channel_width_ = domain->boxhi[1] - domain->boxlo[1];
   channel_centre_ = 0.5 * (domain->boxhi[1] + domain->boxlo[1]);
@@ -70,6 +82,16 @@ ComputeRodShape::ComputeRodShape(LAMMPS *lmp, int &iarg, int narg, char **arg)
     } else if (strcmp(arg[iarg], "mean_velocity") == 0) {
       mean_velocity_ = number(error, arg[iarg], arg[iarg + 1]);
       if (!(mean_velocity_ > 0.0)) error->all(FLERR, "compute rod/shape: mean_velocity must be > 0 m/s");
+    } else if (strcmp(arg[iarg], "contacts") == 0) {
+      const int f = modify->find_fix(arg[iarg + 1]);
+      contacts_ = f < 0 ? nullptr : dynamic_cast<FixRodImplicit *>(modify->fix[f]);
+      if (!contacts_) error->all(FLERR, "compute rod/shape: contacts needs the ID of a fix rod/implicit defined before");
+    } else if (strcmp(arg[iarg], "pass_x") == 0) {
+      pass_x_ = number(error, arg[iarg], arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "clog_velocity") == 0) {
+      clog_velocity_ = number(error, arg[iarg], arg[iarg + 1]);
+      if (!(clog_velocity_ > 0.0 && clog_velocity_ < 1.0))
+        error->all(FLERR, "compute rod/shape: clog_velocity (fraction of mean_velocity) must be in (0, 1)");
     } else if (strcmp(arg[iarg], "section") == 0) {
       section_size_ = static_cast<int>(number(error, arg[iarg], arg[iarg + 1]));
       if (section_size_ < 1) error->all(FLERR, "compute rod/shape: section (spheres per cross-section) must be >= 1");
@@ -77,7 +99,7 @@ ComputeRodShape::ComputeRodShape(LAMMPS *lmp, int &iarg, int narg, char **arg)
       char msg[256];
       std::snprintf(msg, sizeof(msg),
                     "Illegal compute rod/shape command: unknown keyword '%s' (expected channel_width, "
-                    "channel_centre, mean_velocity, section)", arg[iarg]);
+                    "channel_centre, mean_velocity, section, contacts, pass_x, clog_velocity)", arg[iarg]);
       error->all(FLERR, msg);
     }
   }
@@ -175,6 +197,18 @@ void ComputeRodShape::measure() {
     }
     out[LATERAL] = (out[COM_Y] - channel_centre_) / channel_width_;
     if (mean_velocity_ > 0.0) out[VEL_RATIO] = out[VEL_X] / mean_velocity_;
+    // Outcome (paper Sec. 3.5): passed (with or without wall contact on the
+    // way), clogged (touching a wall and stalled before pass_x), en route.
+    const RodContactRecord *record = contacts_ ? contacts_->contact_record(rod_ids_[row]) : nullptr;
+    if (record) {
+      out[WALL_CONTACT] = record->touching ? 1.0 : 0.0;
+      out[WALL_FORCE] = record->wall_force;
+    }
+    const bool ever_touched = record && record->ever_touched;
+    const bool stalled = mean_velocity_ > 0.0 && std::hypot(out[VEL_X], out[VEL_Y]) < clog_velocity_ * mean_velocity_;
+    if (out[COM_X] > pass_x_) out[OUTCOME] = ever_touched ? PASSED_WITH_CONTACT : PASSED_WITHOUT_CONTACT;
+    else if (record && record->touching && stalled) out[OUTCOME] = CLOGGED;
+    else out[OUTCOME] = EN_ROUTE;
   }
 }
 

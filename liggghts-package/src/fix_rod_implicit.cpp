@@ -185,6 +185,11 @@ void FixRodImplicit::initial_integrate(int) {
     largest = std::max(largest, result.largest_displacement / geometry.sphere_diameter);
     wall_force += result.wall_force;
     if (result.wall_contact) contacts++;
+    RodContactRecord &record = contacts_by_rod_[entry.first];
+    record.touching = result.wall_contact;
+    record.ever_touched = record.ever_touched || result.wall_contact;
+    record.wall_force = result.wall_force;
+    record.largest_wall_force = std::max(record.largest_wall_force, result.wall_force);
 
     for (int k = 0; k < n; k++) {
       const int i = atom->map(spheres[k].tag);

@@ -17,10 +17,26 @@ FixStyle(rod/implicit,FixRodImplicit)
 
 #include "fix.h"
 
+#include <map>
+
 namespace LAMMPS_NS {
+
+// Wall-contact history of one rod (identical on every processor).
+struct RodContactRecord {
+  bool touching = false;        // in contact with a wall in the last step
+  bool ever_touched = false;    // since the run started
+  double wall_force = 0.0;      // last step, sum of |wall contact force| [N]
+  double largest_wall_force = 0.0;  // over the run [N]
+};
 
 class FixRodImplicit : public Fix {
  public:
+  // Contact history of rod (molecule) `mol`, or null if unknown.
+  const RodContactRecord *contact_record(int mol) const {
+    auto it = contacts_by_rod_.find(mol);
+    return it == contacts_by_rod_.end() ? nullptr : &it->second;
+  }
+
   FixRodImplicit(class LAMMPS *, int, char **);
   int setmask();
   void init();
@@ -37,6 +53,7 @@ class FixRodImplicit : public Fix {
   double wall_force_;             // last step, sum of wall contact forces [N]
   int contacts_;                  // last step, number of rods touching a wall
   bool warned_;
+  std::map<int, RodContactRecord> contacts_by_rod_;
   bool reported_;                // set-up report printed once, not per run
 };
 

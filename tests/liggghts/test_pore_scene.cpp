@@ -94,3 +94,37 @@ TEST(PoreScene, SoftRodDeflectsMostAtThePoreOutlet) {
   EXPECT_GT(peak.x, 300e-6);
   EXPECT_LT(peak.x, 420e-6);
 }
+
+namespace {
+// Outcome class (compute rod/shape column 14) after `duration` for a stiff
+// rod of n spheres at angle alpha through the pore.
+double pore_outcome(int n, double alpha_deg, double duration) {
+  setenv("HSROD_CACHE_DIR", HSROD_TEST_CACHE_DIR, 1);
+  LiggghtsSession s;
+  s.commands({"units si", "atom_style hybrid granular molecular", "atom_modify map array sort 0 0", "boundary f f f",
+              "newton off", "communicate single cutoff 1e-5 vel yes",
+              "region box block 0 600e-6 0 200e-6 0 20e-6 units box", "create_box 1 box",
+              "create_rod spheres " + std::to_string(n) + " diameter 3e-6 type 1 density 1170 centre 150e-6 100e-6 "
+              "10e-6 angle " + num(alpha_deg),
+              "fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3",
+              "fix drag all hele_shaw/drag channel 600e-6 200e-6 20e-6 origin 0 0 0 pore 85e-6 300e-6 "
+              "viscosity 1e-3 fluid_density 1170 reynolds 2 model local",
+              "fix step all rod/implicit bonds bonds drag drag",
+              "compute shape all rod/shape channel_width 200e-6 channel_centre 100e-6 mean_velocity 0.0295 "
+              "contacts step pass_x 400e-6",
+              "timestep 2e-6", "run " + std::to_string(std::lround(duration / 2e-6))});
+  auto *modify = s.lammps()->modify;
+  auto *c = modify->compute[modify->find_compute("shape")];
+  c->compute_array();
+  return c->array[0][13];
+}
+}  // namespace
+
+TEST(PoreScene, OutcomeClassesOfThePaper) {
+  // Braesel et al. 2024, Sec. 3.5: passage without wall contact, passage
+  // with wall contact, clogging. A rod as long as the pore is wide
+  // (L_Rod/d_pore = 1, alpha = 10 deg) passes without touching; a rod three
+  // times the pore width across the flow touches the pore walls and passes.
+  EXPECT_EQ(pore_outcome(10, 10.0, 5e-3), 1.0);
+  EXPECT_EQ(pore_outcome(30, 0.0, 7e-3), 2.0);
+}

@@ -4,23 +4,28 @@
 //     -lap(u) + 12 u + grad p + (6/5) Re_H (u.grad)u = 0,   div u = 0,
 // Re_H = rho U H / mu (the inertia term only when requested).
 //
-// Discretisation (see flow/README.md):
-//  - staggered MAC grid (mac_grid.h): exact discrete mass conservation, no
-//    spurious pressure modes;
-//  - no-slip on walls and cylinders through the Shortley-Weller stencil
+// Discretisation (see flow/README.md for the measured orders):
+//  - staggered MAC grid (Harlow & Welch 1965, mac_grid.h): exact discrete
+//    mass conservation, no spurious pressure modes;
+//  - no-slip in the momentum equations through the Shortley-Weller stencil
 //    (Shortley & Weller 1938; Gibou et al., J. Comput. Phys. 176, 2002): the
 //    second difference along each grid line uses the exact distance from the
-//    node to the wall where the line crosses one, so that the wall sits at its
-//    true position, not on a staircase. Second order where walls follow grid
-//    lines (the side walls; measured in the tests); near the curved cylinders
-//    the continuity equation still closes the cut faces, which is first order
-//    in the wall position there;
+//    node to the wall where the line crosses one, so walls sit at their true
+//    position, not on a staircase;
+//  - cut faces in the continuity equation: the flux through a face the wall
+//    cuts (or the sliver of a neighbouring face whose centre lies in the wall)
+//    is integrated with the linear no-slip profile along the face
+//    (Stencils::face_flux), which removes the first-order staircase error of
+//    closed cut faces;
+//  - second order where walls follow grid lines (side walls: measured order
+//    1.9); near the cylinders second order away from the wall layer and about
+//    1.5 in L2 including it (self-convergence, see README.md);
 //  - inlet: the developed profile of the same discrete operator, scaled to
 //    the exact flow rate (a straight channel is then exactly x-independent);
 //    outlet: p = 0 and d(u, v)/dx = 0;
 //  - one sparse direct solve of the saddle-point system (Eigen SparseLU,
-//    COLAMD ordering); inertia by Picard (Oseen) iterations reusing the
-//    symbolic factorisation.
+//    COLAMD ordering); inertia by Picard (Oseen) iterations, each solved by
+//    BiCGSTAB preconditioned with that LU.
 #pragma once
 
 #include "flow/mac_grid.h"

@@ -30,6 +30,14 @@ double BrinkmanChannelProfile::shape(double y) const {
   const double ks = k_ * std::abs(y - 0.5 * width_);
   const double ratio =
       std::exp(ks - a_) * (1.0 + std::exp(-2.0 * ks)) / (1.0 + std::exp(-2.0 * a_));
+  if (a_ < 1e-2) {
+    // Narrow channel: 1 - cosh(b)/cosh(a) with b = k s <= a would cancel; use
+    // (cosh a - cosh b)/cosh a = (a^2 - b^2)/2 [1 + (a^2 + b^2)/12
+    // + (a^4 + a^2 b^2 + b^4)/360] / cosh a (next term ~ a^6/20160).
+    const double a2 = a_ * a_, b2 = ks * ks;
+    return 0.5 * (a2 - b2) * (1.0 + (a2 + b2) / 12.0 + (a2 * a2 + a2 * b2 + b2 * b2) / 360.0) /
+           std::cosh(a_) / mean_factor_;
+  }
   return (1.0 - ratio) / mean_factor_;
 }
 

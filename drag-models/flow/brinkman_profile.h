@@ -21,8 +21,9 @@ class BrinkmanChannelProfile {
   double shape(double y) const;
   // d(u / U_mean)/dy [1/m] at y [m] (0 outside [0, W]).
   double shape_slope(double y) const;
-  // u(W/2) / U_mean = 1 / (1 - tanh(a)/a) [-]; -> 1 for W >> H, 3/2 for W << H.
-  double centreline_to_mean() const { return 1.0 / mean_factor_; }
+  // u(W/2) / U_mean = (1 - 1/cosh(a)) / (1 - tanh(a)/a) [-]; -> 1 for W >> H,
+  // 3/2 (plane Poiseuille) for W << H.
+  double centreline_to_mean() const { return shape(0.5 * width_); }
   // dp/dx per unit mean velocity and viscosity: dp/dx = -k^2 mu U / (1 - tanh(a)/a)
   // [1/m^2]; multiply by mu U to get Pa/m.
   double pressure_gradient_factor() const { return -k_ * k_ / mean_factor_; }

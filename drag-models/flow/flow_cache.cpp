@@ -100,8 +100,8 @@ std::optional<StaggeredField> load_cached_field(const std::filesystem::path& fil
   g.nx = nx;
   g.ny = ny;
   std::vector<double> u, v, p;
-  if (!read_doubles(in, u, std::size_t(nx + 1) * (ny + 2)) ||
-      !read_doubles(in, v, std::size_t(nx + 2) * (ny + 1)) ||
+  if (!read_doubles(in, u, std::size_t(extended_u_lattice(g).size())) ||
+      !read_doubles(in, v, std::size_t(extended_v_lattice(g).size())) ||
       !read_doubles(in, p, std::size_t(nx + 2) * ny))
     return std::nullopt;
   std::uint64_t checksum = 0;

@@ -14,7 +14,7 @@
 // File format (binary, native endianness, 8-byte doubles):
 //   "HSRODBF1"  uint32 format version  uint32 key length  key bytes
 //   int32 nx  int32 ny  float64 hx  float64 hy
-//   u_ext[(nx+1)(ny+2)]  v_ext[(nx+2)(ny+1)]  p_ext[(nx+2) ny]
+//   u_ext[(nx+5)(ny+4)]  v_ext[(nx+4)(ny+5)]  p_ext[(nx+2) ny]  (ghost_extension.h)
 //   uint64 FNV-1a of all array bytes
 // Files are written to a temporary name and renamed, so concurrent runs never
 // read a half-written file.
@@ -31,7 +31,7 @@ namespace hsrod {
 
 // Version of the discretisation; part of every key. Bump it whenever the
 // solver's results change so that old cache files are not used.
-inline constexpr const char* kBrinkmanSchemeVersion = "mac-shortley-weller-1";
+inline constexpr const char* kBrinkmanSchemeVersion = "mac-shortley-weller-cutflux-2";
 
 std::string brinkman_cache_key(const ChannelGeometry& scaled_geometry, const MacGrid& grid,
                                double inertia_reynolds);

@@ -8,6 +8,7 @@
 #include "flow/inflow.h"
 #include "flow/staggered_field.h"
 
+#include <algorithm>
 #include <string>
 
 namespace hsrod {
@@ -67,6 +68,9 @@ class GridBrinkmanFlow final : public BackgroundFlow {
   const StaggeredField& field() const { return field_; }
   double cell_size_x() const { return field_.grid().hx * geometry_.gap_height(); }  // m
   double cell_size_y() const { return field_.grid().hy * geometry_.gap_height(); }  // m
+  // Width [m] of the band along the walls where velocity() enforces exact
+  // no-slip (1.5 cells; see grid_brinkman_flow.cpp).
+  double wall_band() const { return 1.5 * std::max(cell_size_x(), cell_size_y()); }
 
   // Process-wide counters (thread-safe): grid flows constructed and grid
   // solves performed. Used by tests to show what was skipped.

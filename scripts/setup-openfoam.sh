@@ -33,7 +33,7 @@ stamp() { echo "[setup-openfoam] $1 ($(( $(date +%s) - t0 )) s elapsed)"; }
 # ---- 1. binary package ------------------------------------------------------
 installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 need=()
-for p in openfoam dpkg-dev xz-utils; do installed "$p" || need+=("$p"); done
+for p in openfoam dpkg-dev xz-utils patch; do installed "$p" || need+=("$p"); done
 if [ "${#need[@]}" -gt 0 ]; then
   $SUDO apt-get update
   $SUDO apt-get install -y --no-install-recommends "${need[@]}"

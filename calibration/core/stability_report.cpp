@@ -1,0 +1,120 @@
+// hsrod calibration: stability and cost report (see stability_report.h).
+#include "stability_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace hsrod::calib {
+
+namespace {
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+}  // namespace
+
+Report make_report(const RunParameters& p) {
+  Report r;
+  std::ostringstream t;
+  t << "hsrod resolved-run report (SI units)\n";
+  if (p.h_sphere > 0 && p.d_min > 0) {
+    r.cells_per_diameter = p.d_min / p.h_sphere;
+    t << "  cells per sphere diameter d/h    " << fmt("%8.2f", r.cells_per_diameter)
+      << "   (need >= " << p.min_cells_per_diameter << ", paper: >= 8)\n";
+    if (r.cells_per_diameter < p.min_cells_per_diameter) {
+      r.errors.push_back("mesh too coarse for the spheres: " + fmt("%.2f", r.cells_per_diameter) +
+                         " cells per diameter at a sphere centre, minimum " +
+                         fmt("%.1f", p.min_cells_per_diameter) +
+                         " (refine the mesh around the spheres or set minCellsPerDiameter)");
+    } else if (r.cells_per_diameter < 8.0) {
+      r.warnings.push_back("fewer than 8 cells per diameter: drag error of several percent expected");
+    }
+  }
+  if (p.h_sphere > 0 && p.dt > 0) {
+    r.courant = p.u_ref * p.dt / p.h_sphere;
+    r.viscous_number = p.nu * p.dt / (p.h_sphere * p.h_sphere);
+    if (p.steady) {
+      t << "  steady (pseudo-time) run: Courant/viscous numbers not limiting\n";
+    } else {
+      t << "  Courant number U dt / h          " << fmt("%8.3g", r.courant) << "   (max "
+        << p.max_courant << ")\n";
+      t << "  viscous number nu dt / h^2       " << fmt("%8.3g", r.viscous_number)
+        << "   (implicit diffusion: information only)\n";
+      if (r.viscous_number > 10.0 && (p.momentum_predictor || p.consistent)) {
+        r.warnings.push_back("viscous number " + fmt("%.3g", r.viscous_number) +
+                             " > 10 with momentumPredictor/consistent on: measured unstable, "
+                             "switch both off and use nOuterCorrectors");
+      }
+      if (r.courant > p.max_courant) {
+        r.warnings.push_back("Courant number " + fmt("%.3g", r.courant) + " above " +
+                             fmt("%.3g", p.max_courant));
+      }
+    }
+  }
+  if (p.nu > 0 && p.d_min > 0) {
+    r.reynolds = p.u_ref * p.d_min / p.nu;
+    t << "  particle Reynolds number U d/nu  " << fmt("%8.3g", r.reynolds) << '\n';
+  }
+  if (p.rho_p > 0 && p.rho_f > 0 && p.nu > 0) {
+    const double mu = p.rho_f * p.nu;
+    r.tau_p = p.rho_p * p.d_min * p.d_min / (18.0 * mu);
+    r.density_ratio = p.rho_p / p.rho_f;
+    t << "  Stokes relaxation tau_p           " << fmt("%8.3g", r.tau_p) << " s\n";
+    t << "  density ratio rho_p/rho_f         " << fmt("%8.3g", r.density_ratio) << '\n';
+  }
+  if (p.dt_dem > 0 && p.coupling_interval > 0) {
+    r.dt_couple = p.dt_dem * p.coupling_interval;
+    t << "  coupling interval dt_c            " << fmt("%8.3g", r.dt_couple) << " s ("
+      << p.coupling_interval << " DEM steps)\n";
+    if (r.tau_p > 0) {
+      r.solid_fluid_ratio = r.dt_couple / r.tau_p;
+      t << "  solid-fluid  dt_c / tau_p         " << fmt("%8.3g", r.solid_fluid_ratio)
+        << "   (stable < 2, accurate <= 1)\n";
+      if (r.solid_fluid_ratio >= 2.0) {
+        r.errors.push_back("coupling interval breaks the solid-fluid criterion: dt_c/tau_p = " +
+                           fmt("%.3g", r.solid_fluid_ratio) + " >= 2 (reduce the coupling interval)");
+      } else if (r.solid_fluid_ratio > 1.0) {
+        r.warnings.push_back("dt_c/tau_p above 1: drag exchange under-resolved");
+      }
+    }
+    if (p.coupled && r.tau_p > 0 && p.h_sphere > 0 && p.d_min > 0) {
+      const double shell = std::pow(1.0 + p.h_sphere / p.d_min, 3) - 1.0;
+      r.amplification = r.solid_fluid_ratio + (0.5 + shell) / r.density_ratio;
+      t << "  explicit coupling gain G          " << fmt("%8.3g", r.amplification)
+        << "   (dt_c/tau_p + (1/2 + shell) rho_f/rho_p; stable < 1)\n";
+      if (r.amplification >= 1.0) {
+        r.errors.push_back("explicit coupling unstable: G = " + fmt("%.3g", r.amplification) +
+                           " >= 1 (light particles / coarse mesh / long coupling interval: raise d/h, "
+                           "shorten the coupling interval, or set allowUnstableCoupling)");
+      } else if (r.amplification > 0.7) {
+        r.warnings.push_back("explicit coupling gain G above 0.7: expect slowly damped oscillations");
+      }
+    }
+    if (p.h_sphere > 0) {
+      r.particle_cfl = p.v_particle * r.dt_couple / p.h_sphere;
+      t << "  fluid-solid  v_p dt_c / h         " << fmt("%8.3g", r.particle_cfl)
+        << "   (accurate <= 0.5, max 1)\n";
+      if (r.particle_cfl > 1.0) {
+        r.errors.push_back("coupling interval breaks the fluid-solid criterion: spheres move " +
+                           fmt("%.3g", r.particle_cfl) + " cells per coupling interval (> 1)");
+      } else if (r.particle_cfl > 0.5) {
+        r.warnings.push_back("spheres move more than half a cell per coupling interval");
+      }
+    }
+  }
+  if (p.n_cells > 0 && p.n_iterations > 0 && p.cost_per_cell_iter > 0) {
+    r.est_cost_s = double(p.n_cells) * p.n_iterations * p.cost_per_cell_iter *
+                   std::max(1, p.n_correctors);
+    t << "  cells " << p.n_cells << ", " << (p.steady ? "max iterations " : "time steps ")
+      << fmt("%.4g", p.n_iterations) << ": estimated cost " << fmt("%.3g", r.est_cost_s)
+      << " s on one core" << (p.steady ? " (upper bound)" : "") << '\n';
+  }
+  for (const auto& w : r.warnings) t << "  WARNING: " << w << '\n';
+  for (const auto& e : r.errors) t << "  ERROR: " << e << '\n';
+  r.text = t.str();
+  return r;
+}
+
+}  // namespace hsrod::calib

@@ -1,0 +1,369 @@
+/*---------------------------------------------------------------------------*\
+ rodIbFoam - hsrod's resolved reference solver.
+
+ Incompressible, laminar, transient PIMPLE (or steady pseudo-time SIMPLE(C)
+ with ddtSchemes steadyState) flow with a direct-forcing immersed boundary
+ for rigid spheres (immersedSpheres.H). Kinematic pressure p [m^2/s^2].
+
+   d(U)/dt + div(phi U) - div(nu grad U) = -grad p - lambda (U - U_s)
+   div(U) = 0
+
+ Inputs (case directory):
+   constant/transportProperties      nu [m^2/s], rho [kg/m^3] (loads in N),
+                                     creepingFlow yes|no (drop convection)
+   constant/immersedBoundaryProperties  spheres file, motion mode, options
+   system/fvSolution PIMPLE          usual entries, plus
+                                     steadyTolerance { U 1e-7; p 1e-6; }
+                                     (steady runs stop when initial
+                                     residuals fall below these)
+ Outputs: postProcessing/rodIbFoam/sphereForces.csv (load on each sphere),
+          postProcessing/rodIbFoam/patchFlux.csv (volumetric flux per patch,
+          m^3/s), fields alphaSolid, U, p at write times.
+\*---------------------------------------------------------------------------*/
+#include "fvCFD.H"
+#include "pimpleControl.H"
+#include "immersedSpheres.H"
+
+#include <fstream>
+#include <iomanip>
+#include <memory>
+
+#ifdef HSROD_WITH_DEM_COUPLING
+#include <mpi.h>
+#include "dem_coupling.h"   // LIGGGHTS behind a pimpl: no LIGGGHTS types here
+#endif
+
+int main(int argc, char* argv[])
+{
+    argList::addNote
+    (
+        "Transient/steady incompressible flow around immersed rigid spheres"
+        " (direct forcing); writes sphere loads as CSV."
+    );
+    argList::addBoolOption("checkOnly", "check the input, print the report and stop");
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    pimpleControl pimple(mesh);
+
+    IOdictionary transportProperties
+    (
+        IOobject("transportProperties", runTime.constant(), mesh,
+                 IOobject::MUST_READ_IF_MODIFIED, IOobject::NO_WRITE)
+    );
+    const dimensionedScalar nu("nu", dimViscosity, transportProperties);
+    const scalar rhoF = transportProperties.get<scalar>("rho");
+    const bool creeping = transportProperties.lookupOrDefault<bool>("creepingFlow", false);
+
+    Info<< "Reading field p" << nl;
+    volScalarField p
+    (
+        IOobject("p", runTime.timeName(), mesh, IOobject::MUST_READ, IOobject::AUTO_WRITE),
+        mesh
+    );
+    Info<< "Reading field U" << nl;
+    volVectorField U
+    (
+        IOobject("U", runTime.timeName(), mesh, IOobject::MUST_READ, IOobject::AUTO_WRITE),
+        mesh
+    );
+    #include "createPhi.H"
+
+    label pRefCell = 0;
+    scalar pRefValue = 0;
+    setRefCell(p, pimple.dict(), pRefCell, pRefValue);
+    mesh.setFluxRequired(p.name());
+
+    hsrodFoam::immersedSpheres ib(mesh, U, nu);
+
+    // ---- coupled mode: LIGGGHTS moves the spheres (fix couple/cfd) ---------
+    const bool coupled = ib.spheres().motion() == hsrod::calib::MotionMode::Coupled;
+    label nDem = 0;
+    scalar dtDem = 0;
+#ifdef HSROD_WITH_DEM_COUPLING
+    std::unique_ptr<hsrod::calib::DemCoupling> dem;
+#endif
+    if (coupled)
+    {
+#ifdef HSROD_WITH_DEM_COUPLING
+        const dictionary& ibDict = ib.dict();
+        const fileName script =
+            runTime.rootPath()/runTime.globalCaseName()/ibDict.get<fileName>("demInput");
+        nDem = ibDict.get<label>("couplingInterval");
+        if (!Pstream::parRun())
+        {
+            UPstream::initNull();   // LIGGGHTS needs MPI also in serial runs
+        }
+        MPI_Comm comm = MPI_COMM_WORLD;
+        dem.reset
+        (
+            new hsrod::calib::DemCoupling
+            (
+                &comm, script, ibDict.lookupOrDefault<bool>("demScreen", false)
+            )
+        );
+        dtDem = dem->timestep();
+        // one CFD step = one coupling interval of nDem DEM steps
+        if (nDem < 1 || mag(nDem*dtDem - runTime.deltaTValue()) > 1e-6*runTime.deltaTValue())
+        {
+            FatalErrorInFunction
+                << "coupling interval mismatch: couplingInterval " << nDem
+                << " x DEM step " << dtDem << " s = " << nDem*dtDem
+                << " s must equal the CFD step deltaT " << runTime.deltaTValue() << " s"
+                << exit(FatalError);
+        }
+        dem->pull(ib.spheres());
+        Info<< "coupled to LIGGGHTS: " << label(ib.spheres().size()) << " spheres, "
+            << nDem << " DEM steps of " << dtDem << " s per CFD step" << nl;
+#else
+        FatalErrorInFunction
+            << "motion coupled needs rodIbFoam built with LIGGGHTS"
+            << " (libliggghts-dev; CMake HSROD_CALIBRATION_DEM_COUPLING)"
+            << exit(FatalError);
+#endif
+    }
+
+    ib.updateBodies(runTime.value());
+    ib.applyFarField(U);
+
+    // ---- bad input and stability/cost report, before any time is spent ----
+    const word ddtName(mesh.ddtScheme("ddt(U)")[0].wordToken());
+    const bool steady = (ddtName == "steadyState");
+    {
+        hsrod::calib::RunParameters rp;
+        U.correctBoundaryConditions();   // evaluate e.g. flow-rate inlets
+        scalar umax = gMax(mag(U.primitiveField())());
+        forAll(U.boundaryField(), patchi)
+        {
+            if (U.boundaryField()[patchi].size())
+            {
+                umax = max(umax, max(mag(U.boundaryField()[patchi])));
+            }
+        }
+        reduce(umax, maxOp<scalar>());
+        for (const auto& s : ib.spheres().spheres())
+        {
+            umax = max(umax, std::sqrt(s.v[0]*s.v[0] + s.v[1]*s.v[1] + s.v[2]*s.v[2]));
+        }
+        rp.u_ref = umax;
+        rp.dt = runTime.deltaTValue();
+        rp.nu = nu.value();
+        rp.rho_f = rhoF;
+        rp.steady = steady;
+        rp.n_iterations = (runTime.endTime().value() - runTime.startTime().value())/rp.dt;
+        rp.n_correctors = pimple.dict().lookupOrDefault<label>("nCorrectors", 1)
+            *pimple.dict().lookupOrDefault<label>("nOuterCorrectors", 1);
+        rp.momentum_predictor = pimple.dict().lookupOrDefault<bool>("momentumPredictor", true);
+        rp.consistent = pimple.dict().lookupOrDefault<bool>("consistent", false);
+        rp.dt_dem = dtDem;
+        rp.coupling_interval = nDem;
+        rp.max_courant = runTime.controlDict().lookupOrDefault<scalar>("maxCo", 1.0);
+        ib.checkAndReport(rp);
+    }
+    if (args.found("checkOnly"))
+    {
+        Info<< "checkOnly: input accepted" << nl << "End" << nl;
+        return 0;
+    }
+
+    // steady convergence criteria (initial residuals of the first solves)
+    const dictionary steadyTol(pimple.dict().subOrEmptyDict("steadyTolerance"));
+    const scalar tolU = steadyTol.lookupOrDefault<scalar>("U", 1e-7);
+    const scalar tolP = steadyTol.lookupOrDefault<scalar>("p", 1e-6);
+    // relative change of the sphere loads per iteration, |F^n - F^n-1| / |F^n|
+    const scalar tolF = steadyTol.lookupOrDefault<scalar>("F", 1e-7);
+    std::vector<hsrod::calib::Vec3> prevF(ib.spheres().size());
+
+    std::unique_ptr<std::ofstream> fluxOut;
+    if (Pstream::master())
+    {
+        const fileName dir = runTime.rootPath()/runTime.globalCaseName()/"postProcessing"/"rodIbFoam";
+        mkDir(dir);
+        fluxOut.reset(new std::ofstream(dir/"patchFlux.csv"));
+        *fluxOut << "# volumetric flux out of each patch [m^3/s]\nt";
+        for (const fvPatch& pp : mesh.boundary()) *fluxOut << ',' << pp.name();
+        *fluxOut << '\n';
+    }
+
+    // ddtCorr: off by default with moving bodies (the old flux belongs to the
+    // old body position; measured: keeping it makes moving-sphere runs diverge)
+    const bool useDdtCorr = pimple.dict().lookupOrDefault<bool>
+    (
+        "ddtCorr",
+        ib.spheres().motion() == hsrod::calib::MotionMode::Fixed
+    );
+    const scalar maxCo = runTime.controlDict().lookupOrDefault<scalar>("maxCo", 1.0);
+    const bool adjustTimeStep =
+        runTime.controlDict().lookupOrDefault("adjustTimeStep", false) && !steady;
+    const scalar maxDeltaT = runTime.controlDict().lookupOrDefault<scalar>("maxDeltaT", GREAT);
+
+    Info<< nl << "Starting time loop" << nl << endl;
+    const clock_t cpu0 = std::clock();
+    label nIter = 0;
+
+    while (runTime.run())
+    {
+        // Courant number on the face fluxes (standard definition)
+        scalar CoNum = 0;
+        {
+            const scalarField sumPhi(fvc::surfaceSum(mag(phi))().primitiveField());
+            CoNum = 0.5*gMax(sumPhi/mesh.V().field())*runTime.deltaTValue();
+        }
+        if (adjustTimeStep && CoNum > SMALL)
+        {
+            const scalar factor = min(min(maxCo/CoNum, 1.2), 1.0 + 0.1*(maxCo/CoNum));
+            runTime.setDeltaT(min(factor*runTime.deltaTValue(), maxDeltaT));
+        }
+
+        ++runTime;
+        ++nIter;
+        Info<< "Time = " << runTime.timeName() << "  Courant " << CoNum << nl;
+
+#ifdef HSROD_WITH_DEM_COUPLING
+        if (dem)
+        {
+            // DEM advances one coupling interval with the loads of the last
+            // fluid step, then hands over the new sphere states
+            dem->run(nDem);
+            dem->pull(ib.spheres());
+        }
+#endif
+        ib.updateBodies(runTime.value());
+
+        scalar resU = 0, resP = 0;
+        bool first = true;
+        while (pimple.loop())
+        {
+            tmp<fvVectorMatrix> tUEqn
+            (
+                creeping
+              ? fvm::ddt(U) - fvm::laplacian(nu, U)
+              : fvm::ddt(U) + fvm::div(phi, U) - fvm::laplacian(nu, U)
+            );
+            fvVectorMatrix& UEqn = tUEqn.ref();
+            ib.addForcing(UEqn);
+            UEqn.relax();
+
+            if (pimple.momentumPredictor())
+            {
+                const auto perf = solve(UEqn == -fvc::grad(p));
+                if (first)
+                {
+                    // components that carry (almost) no flow have meaningless
+                    // normalised residuals: judge only those above 1e-3 max|U|
+                    const scalar umag = gMax(mag(U.primitiveField())()) + VSMALL;
+                    resU = 0;
+                    for (direction i = 0; i < vector::nComponents; ++i)
+                    {
+                        if (gMax(mag(U.primitiveField().component(i))()) > 1e-3*umag)
+                        {
+                            resU = max(resU, perf.initialResidual()[i]);
+                        }
+                    }
+                }
+            }
+
+            while (pimple.correct())
+            {
+                // pressure projection of the forced velocity
+                volScalarField rAU(1.0/UEqn.A());
+                volVectorField HbyA(constrainHbyA(rAU*UEqn.H(), U, p));
+                surfaceScalarField phiHbyA("phiHbyA", fvc::flux(HbyA));
+                if (useDdtCorr)
+                {
+                    // Rhie-Chow-type time-derivative flux correction
+                    phiHbyA += fvc::interpolate(rAU)*fvc::ddtCorr(U, phi);
+                }
+                if (p.needReference())
+                {
+                    adjustPhi(phiHbyA, U, p);
+                }
+
+                tmp<volScalarField> rAtU(rAU);
+                if (pimple.consistent())
+                {
+                    // SIMPLEC: 1/(A - sum of neighbour coefficients)
+                    rAtU = 1.0/max(1.0/rAU - UEqn.H1(), 0.1/rAU);
+                    phiHbyA += fvc::interpolate(rAtU() - rAU)*fvc::snGrad(p)*mesh.magSf();
+                    HbyA -= (rAU - rAtU())*fvc::grad(p);
+                }
+                constrainPressure(p, U, phiHbyA, rAtU());
+
+                while (pimple.correctNonOrthogonal())
+                {
+                    fvScalarMatrix pEqn(fvm::laplacian(rAtU(), p) == fvc::div(phiHbyA));
+                    pEqn.setReference(pRefCell, pRefValue);
+                    const auto perf = pEqn.solve(mesh.solver(p.select(pimple.finalInnerIter())));
+                    if (first) { resP = perf.initialResidual(); first = false; }
+                    if (pimple.finalNonOrthogonalIter())
+                    {
+                        phi = phiHbyA - pEqn.flux();
+                    }
+                }
+                p.relax();
+                U = HbyA - rAtU*fvc::grad(p);
+                U.correctBoundaryConditions();
+            }
+        }
+
+        ib.updateLoads(U, rhoF, steady ? 0 : runTime.deltaTValue());
+        ib.writeLoads(runTime.value());
+#ifdef HSROD_WITH_DEM_COUPLING
+        if (dem)
+        {
+            dem->push(ib.spheres(), Pstream::master());
+        }
+#endif
+
+        // volumetric flux out of each patch [m^3/s]
+        {
+            List<scalar> flux(mesh.boundary().size(), 0.0);
+            forAll(mesh.boundary(), patchi) flux[patchi] = gSum(phi.boundaryField()[patchi]);
+            if (fluxOut)
+            {
+                *fluxOut << std::setprecision(10) << runTime.value();
+                for (const scalar f : flux) *fluxOut << ',' << f;
+                *fluxOut << '\n';
+                fluxOut->flush();
+            }
+        }
+
+        const scalar divErr = runTime.deltaTValue()
+            *mag(fvc::div(phi))().weightedAverage(mesh.V()).value();
+        Info<< "continuity error (dt-weighted mean |div U|) = " << divErr << nl;
+
+        scalar dF = 0;
+        for (std::size_t k = 0; k < ib.spheres().size(); ++k)
+        {
+            const auto& F = ib.spheres().spheres()[k].force;
+            const vector Fn(F[0], F[1], F[2]);
+            const vector Fo(prevF[k][0], prevF[k][1], prevF[k][2]);
+            dF = max(dF, mag(Fn - Fo)/(mag(Fn) + VSMALL));
+            prevF[k] = F;
+        }
+        if (steady && nIter > 2 && resU < tolU && resP < tolP && dF < tolF)
+        {
+            Info<< "steady state reached: initial residuals U " << resU << " < " << tolU
+                << ", p " << resP << " < " << tolP << ", load change " << dF << " < " << tolF
+                << " after " << nIter << " iterations" << nl;
+            runTime.writeAndEnd();
+        }
+        else
+        {
+            runTime.write();
+        }
+        Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s" << nl << endl;
+    }
+
+#ifdef HSROD_WITH_DEM_COUPLING
+    dem.reset();   // before argList goes: OpenFOAM's exit finalises MPI
+#endif
+    const scalar cpu = scalar(std::clock() - cpu0)/CLOCKS_PER_SEC;
+    const label nCells = returnReduce(mesh.nCells(), sumOp<label>());
+    Info<< "rodIbFoam: " << nIter << " iterations, " << nCells << " cells, "
+        << cpu << " s CPU, " << cpu/max(label(1), nIter)/max(label(1), nCells)
+        << " s per cell-iteration" << nl << "End" << nl;
+    return 0;
+}

@@ -81,7 +81,9 @@ FixRodBonds::FixRodBonds(LAMMPS *lmp, int narg, char **arg)
       explicit_limit_(0.0),
       limits_printed_(false),
       integrated_implicitly_(false),
-      limits_reported_(false) {
+      limits_reported_(false),
+      limits_diameter_(0.0),
+      limits_density_(0.0) {
   if (!atom->molecular || !atom->molecule_flag)
     error->all(FLERR, "fix rod/bonds requires an atom style with bonds and molecule IDs "
                       "(atom_style hybrid granular molecular)");
@@ -202,12 +204,19 @@ void FixRodBonds::compute_stability_limits() {
   const double pi = 3.14159265358979323846;
   const double density = global[1] / (pi * d * d * d / 6.0);
 
-  hsrod::RodSpec chain;
-  chain.number_of_sections = 20;  // omega_max of a chain has converged by 20 spheres
-  chain.sphere_diameter = d;
-  hsrod::BeamBondMaterial bond{youngs_modulus_, poisson_ratio_, bond_radius_ratio_ * d, damping_ratio_};
-  const auto limits = hsrod::compute_stability_limits(hsrod::make_rod_layout(chain),
-                                                      {d, density, youngs_modulus_, poisson_ratio_}, bond, 0.0);
+  // The limits depend only on the spheres and the material: computed once
+  // and reused by later runs (the damped limit takes an eigen-bisection).
+  if (!(d == limits_diameter_ && density == limits_density_)) {
+    hsrod::RodSpec chain;
+    chain.number_of_sections = 20;  // omega_max of a chain has converged by 20 spheres
+    chain.sphere_diameter = d;
+    hsrod::BeamBondMaterial bond{youngs_modulus_, poisson_ratio_, bond_radius_ratio_ * d, damping_ratio_};
+    limits_ = hsrod::compute_stability_limits(hsrod::make_rod_layout(chain),
+                                              {d, density, youngs_modulus_, poisson_ratio_}, bond, 0.0);
+    limits_diameter_ = d;
+    limits_density_ = density;
+  }
+  const hsrod::RodStabilityLimits &limits = limits_;
   explicit_limit_ = limits.explicit_bond_limit;  // includes the bond damping
 
   if (comm->me == 0 && !limits_printed_) {

@@ -20,6 +20,8 @@ FixStyle(rod/bonds,FixRodBonds)
 
 #include "fix.h"
 
+#include "rod/stability_limits.h"
+
 #include <Eigen/Geometry>
 
 #include <vector>
@@ -93,6 +95,9 @@ class FixRodBonds : public Fix {
   bool limits_printed_;
   bool integrated_implicitly_;
   bool limits_reported_;       // warnings given once per fix, not per run
+  hsrod::RodStabilityLimits limits_;  // cached for the spheres below
+  double limits_diameter_;     // [m]
+  double limits_density_;      // [kg/m3]
 
   BondRestRecord *records(int i) { return reinterpret_cast<BondRestRecord *>(bond_rest_[i]); }
   BondRestRecord *find_or_create_record(int i, int j, int partner_tag);

@@ -20,6 +20,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "keyword_parsing.h"
 #include "memory.h"
 #include "update.h"
 
@@ -41,20 +42,6 @@
 
 using namespace LAMMPS_NS;
 
-namespace {
-
-double number(Error *error, const char *keyword, const char *text) {
-  char *end = nullptr;
-  const double value = std::strtod(text, &end);
-  if (end == text || *end != '\0') {
-    char msg[256];
-    std::snprintf(msg, sizeof(msg), "Illegal compute rod/shape command: %s expects a number, got '%s'", keyword, text);
-    error->all(FLERR, msg);
-  }
-  return value;
-}
-
-}  // namespace
 
 ComputeRodShape::ComputeRodShape(LAMMPS *lmp, int &iarg, int narg, char **arg)
     : Compute(lmp, iarg, narg, arg),
@@ -75,25 +62,25 @@ ComputeRodShape::ComputeRodShape(LAMMPS *lmp, int &iarg, int narg, char **arg)
       error->all(FLERR, msg);
     }
     if (strcmp(arg[iarg], "channel_width") == 0) {
-      channel_width_ = number(error, arg[iarg], arg[iarg + 1]);
+      channel_width_ = parse_number(error, "compute rod/shape", arg[iarg], arg[iarg + 1]);
       if (!(channel_width_ > 0.0)) error->all(FLERR, "compute rod/shape: channel_width must be > 0 m");
     } else if (strcmp(arg[iarg], "channel_centre") == 0 || strcmp(arg[iarg], "channel_center") == 0) {
-      channel_centre_ = number(error, arg[iarg], arg[iarg + 1]);
+      channel_centre_ = parse_number(error, "compute rod/shape", arg[iarg], arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "mean_velocity") == 0) {
-      mean_velocity_ = number(error, arg[iarg], arg[iarg + 1]);
+      mean_velocity_ = parse_number(error, "compute rod/shape", arg[iarg], arg[iarg + 1]);
       if (!(mean_velocity_ > 0.0)) error->all(FLERR, "compute rod/shape: mean_velocity must be > 0 m/s");
     } else if (strcmp(arg[iarg], "contacts") == 0) {
       const int f = modify->find_fix(arg[iarg + 1]);
       contacts_ = f < 0 ? nullptr : dynamic_cast<FixRodImplicit *>(modify->fix[f]);
       if (!contacts_) error->all(FLERR, "compute rod/shape: contacts needs the ID of a fix rod/implicit defined before");
     } else if (strcmp(arg[iarg], "pass_x") == 0) {
-      pass_x_ = number(error, arg[iarg], arg[iarg + 1]);
+      pass_x_ = parse_number(error, "compute rod/shape", arg[iarg], arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "clog_velocity") == 0) {
-      clog_velocity_ = number(error, arg[iarg], arg[iarg + 1]);
+      clog_velocity_ = parse_number(error, "compute rod/shape", arg[iarg], arg[iarg + 1]);
       if (!(clog_velocity_ > 0.0 && clog_velocity_ < 1.0))
         error->all(FLERR, "compute rod/shape: clog_velocity (fraction of mean_velocity) must be in (0, 1)");
     } else if (strcmp(arg[iarg], "section") == 0) {
-      section_size_ = static_cast<int>(number(error, arg[iarg], arg[iarg + 1]));
+      section_size_ = parse_integer(error, "compute rod/shape", arg[iarg], arg[iarg + 1]);
       if (section_size_ < 1) error->all(FLERR, "compute rod/shape: section (spheres per cross-section) must be >= 1");
     } else {
       char msg[256];

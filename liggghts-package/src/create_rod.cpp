@@ -16,6 +16,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "keyword_parsing.h"
 #include "force.h"
 #include "modify.h"
 #include "fix.h"
@@ -34,31 +35,6 @@
 
 using namespace LAMMPS_NS;
 
-namespace {
-
-double number(Error *error, const char *keyword, const char *text) {
-  char *end = nullptr;
-  const double value = std::strtod(text, &end);
-  if (end == text || *end != '\0') {
-    char msg[256];
-    std::snprintf(msg, sizeof(msg), "Illegal create_rod command: %s expects a number, got '%s'", keyword, text);
-    error->all(FLERR, msg);
-  }
-  return value;
-}
-
-int integer(Error *error, const char *keyword, const char *text) {
-  char *end = nullptr;
-  const long value = std::strtol(text, &end, 10);
-  if (end == text || *end != '\0') {
-    char msg[256];
-    std::snprintf(msg, sizeof(msg), "Illegal create_rod command: %s expects an integer, got '%s'", keyword, text);
-    error->all(FLERR, msg);
-  }
-  return static_cast<int>(value);
-}
-
-}  // namespace
 
 CreateRod::CreateRod(LAMMPS *lmp) : Pointers(lmp) {}
 
@@ -84,40 +60,40 @@ void CreateRod::command(int narg, char **arg) {
     };
     if (strcmp(key, "spheres") == 0) {
       need(1);
-      spec.number_of_sections = integer(error, key, arg[iarg + 1]);
+      spec.number_of_sections = parse_integer(error, "create_rod", key, arg[iarg + 1]);
       have[0] = true;
       iarg += 2;
     } else if (strcmp(key, "diameter") == 0) {
       need(1);
-      spec.sphere_diameter = number(error, key, arg[iarg + 1]);
+      spec.sphere_diameter = parse_number(error, "create_rod", key, arg[iarg + 1]);
       have[1] = true;
       iarg += 2;
     } else if (strcmp(key, "type") == 0) {
       need(1);
-      type = integer(error, key, arg[iarg + 1]);
+      type = parse_integer(error, "create_rod", key, arg[iarg + 1]);
       have[2] = true;
       iarg += 2;
     } else if (strcmp(key, "density") == 0) {
       need(1);
-      density = number(error, key, arg[iarg + 1]);
+      density = parse_number(error, "create_rod", key, arg[iarg + 1]);
       have[3] = true;
       iarg += 2;
     } else if (strcmp(key, "centre") == 0 || strcmp(key, "center") == 0) {
       need(3);
-      for (int a = 0; a < 3; a++) spec.centre[a] = number(error, key, arg[iarg + 1 + a]);
+      for (int a = 0; a < 3; a++) spec.centre[a] = parse_number(error, "create_rod", key, arg[iarg + 1 + a]);
       have[4] = true;
       iarg += 4;
     } else if (strcmp(key, "angle") == 0) {
       need(1);
-      angle_deg = number(error, key, arg[iarg + 1]);
+      angle_deg = parse_number(error, "create_rod", key, arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(key, "offset") == 0) {
       need(1);
-      offset = number(error, key, arg[iarg + 1]);
+      offset = parse_number(error, "create_rod", key, arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(key, "spacing") == 0) {
       need(1);
-      spec.spacing = number(error, key, arg[iarg + 1]);
+      spec.spacing = parse_number(error, "create_rod", key, arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(key, "section") == 0) {
       need(1);
@@ -131,12 +107,12 @@ void CreateRod::command(int narg, char **arg) {
       iarg += 2;
     } else if (strcmp(key, "mol") == 0) {
       need(1);
-      mol = integer(error, key, arg[iarg + 1]);
+      mol = parse_integer(error, "create_rod", key, arg[iarg + 1]);
       if (mol <= 0) error->all(FLERR, "create_rod: mol must be a positive molecule ID");
       iarg += 2;
     } else if (strcmp(key, "bond_type") == 0) {
       need(1);
-      bond_type = integer(error, key, arg[iarg + 1]);
+      bond_type = parse_integer(error, "create_rod", key, arg[iarg + 1]);
       if (bond_type <= 0) error->all(FLERR, "create_rod: bond_type must be >= 1");
       iarg += 2;
     } else {

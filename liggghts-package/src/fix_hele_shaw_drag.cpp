@@ -23,6 +23,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "keyword_parsing.h"
 #include "memory.h"
 #include "update.h"
 
@@ -46,21 +47,6 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-namespace {
-
-double number(Error *error, const char *keyword, const char *text) {
-  char *end = nullptr;
-  const double value = std::strtod(text, &end);
-  if (end == text || *end != '\0') {
-    char msg[256];
-    std::snprintf(msg, sizeof(msg), "Illegal fix hele_shaw/drag command: %s expects a number, got '%s'", keyword,
-                  text);
-    error->all(FLERR, msg);
-  }
-  return value;
-}
-
-}  // namespace
 
 FixHeleShawDrag::FixHeleShawDrag(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg),
@@ -103,32 +89,32 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *lmp, int narg, char **arg)
     const char *key = arg[iarg];
     if (strcmp(key, "channel") == 0) {
       need(3);
-      length = number(error, key, arg[iarg + 1]);
-      width = number(error, key, arg[iarg + 2]);
-      gap = number(error, key, arg[iarg + 3]);
+      length = parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 1]);
+      width = parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 2]);
+      gap = parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 3]);
       iarg += 4;
     } else if (strcmp(key, "origin") == 0) {
       need(3);
-      for (int a = 0; a < 3; a++) origin[a] = number(error, key, arg[iarg + 1 + a]);
+      for (int a = 0; a < 3; a++) origin[a] = parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 1 + a]);
       iarg += 4;
     } else if (strcmp(key, "pore") == 0) {
       need(2);
-      pore_radius = number(error, key, arg[iarg + 1]);
-      pore_x = number(error, key, arg[iarg + 2]);
+      pore_radius = parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 1]);
+      pore_x = parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 2]);
       iarg += 3;
     } else if (strcmp(key, "cylinder") == 0) {
       need(3);
-      cylinders.push_back({number(error, key, arg[iarg + 1]), number(error, key, arg[iarg + 2]),
-                           number(error, key, arg[iarg + 3])});
+      cylinders.push_back({parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 1]), parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 2]),
+                           parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 3])});
       iarg += 4;
     } else if (strcmp(key, "viscosity") == 0) {
       need(1);
-      viscosity_ = number(error, key, arg[iarg + 1]);
+      viscosity_ = parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 1]);
       if (!(viscosity_ > 0.0)) error->all(FLERR, "fix hele_shaw/drag: viscosity must be > 0 Pa s");
       iarg += 2;
     } else if (strcmp(key, "fluid_density") == 0) {
       need(1);
-      fluid_density_ = number(error, key, arg[iarg + 1]);
+      fluid_density_ = parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 1]);
       if (!(fluid_density_ > 0.0)) error->all(FLERR, "fix hele_shaw/drag: fluid_density must be > 0 kg/m3");
       iarg += 2;
     } else if (strcmp(key, "mean_velocity") == 0 || strcmp(key, "flow_rate") == 0 || strcmp(key, "reynolds") == 0) {
@@ -136,7 +122,7 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *lmp, int narg, char **arg)
       if (inflow_kind != NONE)
         error->all(FLERR, "fix hele_shaw/drag: give only one of mean_velocity, flow_rate, reynolds");
       inflow_kind = key[0] == 'm' ? MEAN : (key[0] == 'f' ? RATE : REYNOLDS);
-      inflow_value = number(error, key, arg[iarg + 1]);
+      inflow_value = parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 1]);
       if (!(inflow_value > 0.0)) {
         char msg[128];
         std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s must be > 0", key);
@@ -156,7 +142,7 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *lmp, int narg, char **arg)
       iarg += 2;
     } else if (strcmp(key, "tolerance") == 0) {
       need(1);
-      tolerance_ = number(error, key, arg[iarg + 1]);
+      tolerance_ = parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 1]);
       if (!(tolerance_ > 0.0 && tolerance_ < 1.0)) error->all(FLERR, "fix hele_shaw/drag: tolerance must be in (0, 1)");
       iarg += 2;
     } else if (strcmp(key, "coefficients") == 0) {
@@ -165,17 +151,12 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *lmp, int narg, char **arg)
       iarg += 2;
     } else if (strcmp(key, "section") == 0) {
       need(1);
-      section_size_ = static_cast<int>(number(error, key, arg[iarg + 1]));
+      section_size_ = parse_integer(error, "fix hele_shaw/drag", key, arg[iarg + 1]);
       if (section_size_ < 1) error->all(FLERR, "fix hele_shaw/drag: section must be >= 1");
       iarg += 2;
     } else if (strcmp(key, "inertia") == 0 || strcmp(key, "timestep_check") == 0) {
       need(1);
-      const bool yes = strcmp(arg[iarg + 1], "yes") == 0;
-      if (!yes && strcmp(arg[iarg + 1], "no") != 0) {
-        char msg[128];
-        std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s expects yes or no", key);
-        error->all(FLERR, msg);
-      }
+      const bool yes = parse_yes_no(error, "fix hele_shaw/drag", key, arg[iarg + 1]);
       if (key[0] == 'i') inertia = yes;
       else timestep_check_ = yes;
       iarg += 2;

@@ -9,6 +9,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "keyword_parsing.h"
 #include "force.h"
 #include "group.h"
 #include "memory.h"
@@ -42,25 +43,7 @@ void store_quaternion(const Eigen::Quaterniond &q, double *out) {
   out[3] = q.z();
 }
 
-double parse_number(Error *error, const char *keyword, const char *text) {
-  char *end = nullptr;
-  const double value = std::strtod(text, &end);
-  if (end == text || *end != '\0') {
-    char msg[256];
-    std::snprintf(msg, sizeof(msg), "Illegal fix rod/bonds command: %s expects a number, got '%s'", keyword, text);
-    error->all(FLERR, msg);
-  }
-  return value;
-}
 
-bool parse_yes_no(Error *error, const char *keyword, const char *text) {
-  if (std::strcmp(text, "yes") == 0) return true;
-  if (std::strcmp(text, "no") == 0) return false;
-  char msg[256];
-  std::snprintf(msg, sizeof(msg), "Illegal fix rod/bonds command: %s expects yes or no, got '%s'", keyword, text);
-  error->all(FLERR, msg);
-  return false;
-}
 
 }  // namespace
 
@@ -102,18 +85,18 @@ FixRodBonds::FixRodBonds(LAMMPS *lmp, int narg, char **arg)
     const char *key = arg[iarg];
     const char *val = arg[iarg + 1];
     if (strcmp(key, "youngs_modulus") == 0) {
-      youngs_modulus_ = parse_number(error, key, val);
+      youngs_modulus_ = parse_number(error, "fix rod/bonds", key, val);
       have_modulus = true;
     } else if (strcmp(key, "poisson_ratio") == 0) {
-      poisson_ratio_ = parse_number(error, key, val);
+      poisson_ratio_ = parse_number(error, "fix rod/bonds", key, val);
     } else if (strcmp(key, "damping") == 0) {
-      damping_ratio_ = parse_number(error, key, val);
+      damping_ratio_ = parse_number(error, "fix rod/bonds", key, val);
     } else if (strcmp(key, "bond_radius_ratio") == 0) {
-      bond_radius_ratio_ = parse_number(error, key, val);
+      bond_radius_ratio_ = parse_number(error, "fix rod/bonds", key, val);
     } else if (strcmp(key, "timestep_check") == 0) {
-      timestep_check_ = parse_yes_no(error, key, val);
+      timestep_check_ = parse_yes_no(error, "fix rod/bonds", key, val);
     } else if (strcmp(key, "exclude_pairs") == 0) {
-      exclude_pairs_ = parse_yes_no(error, key, val);
+      exclude_pairs_ = parse_yes_no(error, "fix rod/bonds", key, val);
     } else {
       char msg[256];
       std::snprintf(msg, sizeof(msg),

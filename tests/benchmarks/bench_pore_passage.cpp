@@ -25,17 +25,13 @@
 #include <map>
 
 using hsrod_test::LiggghtsSession;
+using hsrod_test::num;
 
 namespace {
 
 constexpr double kPassage = 4.4e-3;  // [s] rod from x = 150 um to ~520 um
 constexpr double kD = 3e-6;
 
-std::string num(double value) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.17g", value);
-  return buf;
-}
 
 struct Outcome {
   double x, angle, lateral;

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <mpi.h>
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,14 @@ class LiggghtsSession {
   std::vector<char *> argv_;
   LAMMPS_NS::LAMMPS *lmp_ = nullptr;
 };
+
+// Full precision for numbers pasted into script lines (std::to_string
+// would print 1e-8 as 0.000000).
+inline std::string num(double value) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.17g", value);
+  return buf;
+}
 
 // A small LIGGGHTS script header: SI units, spheres with bonds, a box.
 inline std::vector<std::string> rod_box_header(double half_size, const std::string &boundary = "f f f",

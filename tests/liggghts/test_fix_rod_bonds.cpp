@@ -14,16 +14,10 @@
 #include <sstream>
 
 using hsrod_test::LiggghtsSession;
+using hsrod_test::num;
 
 namespace {
 
-// Full precision for numbers pasted into script lines (std::to_string
-// would print 1e-8 as 0.000000).
-std::string num(double value) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.17g", value);
-  return buf;
-}
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDiameter = 3e-6;      // [m], the pore scene's spheres

@@ -14,14 +14,10 @@
 #include <cstdlib>
 
 using hsrod_test::LiggghtsSession;
+using hsrod_test::num;
 
 namespace {
 
-std::string num(double value) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.17g", value);
-  return buf;
-}
 
 struct RodState {
   double x, angle, lateral, deflection, explicit_limit;

@@ -11,16 +11,12 @@
 #include <cstdio>
 
 using hsrod_test::LiggghtsSession;
+using hsrod_test::num;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string num(double value) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.17g", value);
-  return buf;
-}
 
 const std::vector<std::string> kSetup = {"units si", "atom_style hybrid granular molecular",
                                          "atom_modify map array sort 0 0", "boundary f f f", "newton off",

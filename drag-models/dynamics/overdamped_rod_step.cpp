@@ -1,5 +1,7 @@
 #include "dynamics/overdamped_rod_step.h"
 
+#include "rod/rod_linearisation.h"
+
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
@@ -61,8 +63,7 @@ OverdampedRod make_overdamped_rod(const RodLayout& layout, const BeamBondMateria
     RodBond bond;
     bond.i = b.first;
     bond.j = b.second;
-    bond.rest = BeamBondRest::from_current(rod.positions[b.first], rod.orientations[b.first],
-                                           rod.positions[b.second], rod.orientations[b.second]);
+    bond.rest = layout_rest_state(layout, b);
     bond.stiffness = BeamBondStiffness::from_material(material, bond.rest.rest_length());
     rod.bonds.push_back(bond);
   }

@@ -9,6 +9,11 @@
 
 namespace hsrod {
 
+BeamBondRest layout_rest_state(const RodLayout& layout, const std::pair<int, int>& bond) {
+  return BeamBondRest::from_current(layout.spheres[bond.first].position, Eigen::Quaterniond::Identity(),
+                                    layout.spheres[bond.second].position, Eigen::Quaterniond::Identity());
+}
+
 Eigen::VectorXd rod_bond_loads(const RodLayout& layout, const BeamBondMaterial& bond,
                                const Eigen::VectorXd& dof) {
   const int n = static_cast<int>(layout.spheres.size());
@@ -19,10 +24,7 @@ Eigen::VectorXd rod_bond_loads(const RodLayout& layout, const BeamBondMaterial& 
     state[s].orientation = quaternion_from_rotation_vector(dof.segment<3>(6 * s + 3));
   }
   for (const auto& b : layout.bonds) {
-    const auto& xi = layout.spheres[b.first].position;
-    const auto& xj = layout.spheres[b.second].position;
-    const BeamBondRest rest = BeamBondRest::from_current(xi, Eigen::Quaterniond::Identity(), xj,
-                                                         Eigen::Quaterniond::Identity());
+    const BeamBondRest rest = layout_rest_state(layout, b);
     const auto k = BeamBondStiffness::from_material(bond, rest.rest_length());
     const auto out = evaluate_beam_bond(state[b.first], state[b.second], rest, k, BeamBondDamping{});
     loads.segment<3>(6 * b.first) -= out.force_on_j;
@@ -77,8 +79,7 @@ Eigen::MatrixXd linearised_bond_damping(const RodLayout& layout, const BeamBondM
   for (const auto& b : layout.bonds) {
     const auto& xi = layout.spheres[b.first].position;
     const auto& xj = layout.spheres[b.second].position;
-    const BeamBondRest rest = BeamBondRest::from_current(xi, Eigen::Quaterniond::Identity(), xj,
-                                                         Eigen::Quaterniond::Identity());
+    const BeamBondRest rest = layout_rest_state(layout, b);
     const auto k = BeamBondStiffness::from_material(bond, rest.rest_length());
     const auto c = BeamBondDamping::critical_fraction(bond.damping_ratio, k, reduced_mass, reduced_inertia);
     const int base[2] = {6 * b.first, 6 * b.second};

@@ -18,6 +18,10 @@ struct SphereMaterial;
 // differences of the full nonlinear bond law, symmetrised.
 Eigen::MatrixXd linearised_bond_stiffness(const RodLayout& layout, const BeamBondMaterial& bond);
 
+// Rest state of a layout bond: spheres at their layout positions with
+// identity orientations (the state create_rod makes).
+BeamBondRest layout_rest_state(const RodLayout& layout, const std::pair<int, int>& bond);
+
 // Bond forces/torques (6n) for a displacement/rotation vector `dof` (6n).
 Eigen::VectorXd rod_bond_loads(const RodLayout& layout, const BeamBondMaterial& bond,
                                const Eigen::VectorXd& dof);

@@ -121,17 +121,8 @@ void ComputeRodShape::find_rods() {
   for (int i = 0; i < atom->nlocal; i++)
     if ((atom->mask[i] & groupbit) && atom->molecule[i] > 0) local.insert(atom->molecule[i]);
   std::vector<int> mine(local.begin(), local.end());
-  int n = static_cast<int>(mine.size());
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < comm->nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<int> all(std::max(total, 1));
-  MPI_Allgatherv(mine.data(), n, MPI_INT, all.data(), counts.data(), displs.data(), MPI_INT, world);
-  std::set<int> unique(all.begin(), all.begin() + total);
+  const std::vector<int> all = allgather_all(world, comm->nprocs, mine);
+  std::set<int> unique(all.begin(), all.end());
   rod_ids_.assign(unique.begin(), unique.end());
 }
 

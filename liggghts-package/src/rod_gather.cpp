@@ -53,16 +53,8 @@ void RodGather::gather(int groupbit, FixRodBonds *bond_fix) {
       mine.push_back(b.rest_rotation.z());
     }
   }
-  int n = static_cast<int>(mine.size());
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < comm->nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<double> all(std::max(total, 1));
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
+  const std::vector<double> all = allgather_all(world, comm->nprocs, mine);
+  const int total = static_cast<int>(all.size());
 
   for (int m = 0; m < total;) {
     GatheredSphere s;

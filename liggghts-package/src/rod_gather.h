@@ -14,6 +14,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <mpi.h>
+
+#include <algorithm>
 #include <map>
 #include <vector>
 
@@ -37,6 +40,10 @@ struct GatheredSphere {
   std::vector<GatheredBond> bonds;      // bonds stored on this sphere (with `bonds` fix only)
 };
 
+// Concatenation of every proc's `mine`, in rank order, on every proc.
+template <typename T>
+std::vector<T> allgather_all(MPI_Comm world, int nprocs, const std::vector<T> &mine);
+
 class RodGather : protected Pointers {
  public:
   explicit RodGather(class LAMMPS *lmp) : Pointers(lmp) {}
@@ -45,6 +52,24 @@ class RodGather : protected Pointers {
   void gather(int groupbit, FixRodBonds *bonds);
   std::map<int, std::vector<GatheredSphere>> rods;
 };
+
+template <typename T>
+std::vector<T> allgather_all(MPI_Comm world, int nprocs, const std::vector<T> &mine) {
+  const MPI_Datatype type = sizeof(T) == sizeof(double) ? MPI_DOUBLE : MPI_INT;
+  static_assert(sizeof(T) == sizeof(double) || sizeof(T) == sizeof(int), "int or double data only");
+  int n = static_cast<int>(mine.size());
+  std::vector<int> counts(nprocs), displs(nprocs, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  std::vector<T> all(std::max(total, 1));
+  MPI_Allgatherv(mine.data(), n, type, all.data(), counts.data(), displs.data(), type, world);
+  all.resize(total);
+  return all;
+}
 
 }  // namespace LAMMPS_NS
 

@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config
   liggghts libliggghts-dev
   libopenmpi-dev openmpi-bin
-  libeigen3-dev
+  libeigen3-dev libsuitesparse-dev
   libgtest-dev googletest libbenchmark-dev
   libcli11-dev nlohmann-json3-dev
   python3-numpy python3-matplotlib

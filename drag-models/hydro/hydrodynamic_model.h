@@ -11,6 +11,7 @@
 
 #include "flow/background_flow.h"
 #include "hydro/confinement_coefficients.h"
+#include "hydro/twoway_window_options.h"
 
 #include <Eigen/Core>
 
@@ -25,6 +26,7 @@ struct RodGeometry {
   std::vector<Eigen::Vector3d> positions;  // sphere centres [m], ordered section by section
   int spheres_per_section = 1;             // 1, or R*L for multi-sphere sections
   double sphere_diameter = 0.0;            // d [m]
+  int id = 0;                              // names the rod across calls (models that keep per-rod state)
 
   int size() const { return static_cast<int>(positions.size()); }
   int sections() const { return size() / spheres_per_section; }
@@ -61,13 +63,22 @@ class HydrodynamicModel {
   virtual std::string name() const = 0;
   virtual int level() const = 0;  // rung of the fidelity ladder, 1..4
   virtual void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const = 0;
+  // One line on the work done so far, for models that do more than a fixed
+  // amount per call (level 4: window solves); "" for the others.
+  virtual std::string work_summary() const { return ""; }
 };
 
-// Model names: "isotropic" (level 1), "local" (level 2), "nonlocal" (level 3).
+// Model names: "isotropic" (level 1), "local" (level 2), "nonlocal" (level 3),
+// "twoway" (level 4, default window options; hydro/twoway_window_model.h).
 // Throws std::invalid_argument for an unknown name or beta outside the table.
+// `window` configures level 4 (hydro/twoway_window_model.h); other levels ignore it.
 std::unique_ptr<HydrodynamicModel> make_hydrodynamic_model(const std::string& name,
                                                            const HydrodynamicParameters& parameters,
                                                            const ConfinementTable& table);
+std::unique_ptr<HydrodynamicModel> make_hydrodynamic_model(const std::string& name,
+                                                           const HydrodynamicParameters& parameters,
+                                                           const ConfinementTable& table,
+                                                           const TwoWayWindowOptions& window);
 
 // Names accepted by make_hydrodynamic_model, for error messages.
 std::vector<std::string> hydrodynamic_model_names();

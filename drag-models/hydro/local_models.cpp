@@ -1,6 +1,7 @@
 // Levels 1 and 2 of the ladder: local drag laws, one 3x3 block per sphere.
 #include "hydro/local_models.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hsrod {
@@ -24,6 +25,10 @@ LocalDragBase::LocalDragBase(const HydrodynamicParameters& p, const ConfinementT
   sphere_friction_ = 3.0 * kPi * p.viscosity * d * coefficients_.sphere_friction;
   // Free-space rotational friction pi mu d^3 (no confinement correction).
   rotational_friction_ = kPi * p.viscosity * d * d * d;
+}
+
+double LocalDragBase::obstruction_friction() const {
+  return sphere_friction_ * std::min(1.0, coefficients_.sphere_driving / 1.5);
 }
 
 void LocalDragBase::add_rotation(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {

@@ -15,6 +15,11 @@ class LocalDragBase : public HydrodynamicModel {
   double sphere_friction_;      // zeta = 3 pi mu d * sphere_friction(beta) [N s/m]
   double rotational_friction_;  // pi mu d^3 [N m s]
   void add_rotation(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const;
+  // Obstruction part zeta_o of the sphere friction (levels 3-4): the
+  // isolated sphere's force-free velocity lambda u fixes it, zeta_o =
+  // zeta lambda / (3/2); the rest, zeta - zeta_o, is film friction with the
+  // gap walls (see nonlocal_model.h).
+  double obstruction_friction() const;
 };
 
 // Level 1: every sphere is an isolated confined sphere,

@@ -12,8 +12,7 @@ constexpr double kMidplaneFactor = 1.5;  // mid-plane over gap-averaged velocity
 
 NonlocalRodModel::NonlocalRodModel(const HydrodynamicParameters& p, const ConfinementTable& table)
     : LocalDragBase(p, table) {
-  const double fraction = std::min(1.0, coefficients_.sphere_driving / kMidplaneFactor);
-  obstruction_friction_ = sphere_friction_ * fraction;
+  obstruction_friction_ = LocalDragBase::obstruction_friction();
   film_friction_ = sphere_friction_ - obstruction_friction_;
 }
 

@@ -9,7 +9,11 @@
      viscosity mu        [Pa s] (default 1e-3)
      fluid_density rho   [kg/m3] (default 1000)
      mean_velocity U | flow_rate Q | reynolds Re    inflow (one required)
-     model isotropic|local|nonlocal|auto   (default auto)
+     model isotropic|local|nonlocal|twoway|auto   (default auto)
+     window_cells c      twoway: grid cells per sphere diameter (default 3)
+     window_margin m     twoway: window margin around the rod [m] (default auto)
+     window_update s     twoway: re-solve after a sphere moved s [m] (default d/4)
+     window_every k      twoway: re-solve at least every k steps (default 0: by distance only)
      tolerance t         auto: accepted relative deflection error (default 0.01)
      coefficients file   confinement coefficient table (default: built-in)
      section S           spheres per rod cross-section (default 1)
@@ -132,13 +136,36 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *lmp, int narg, char **arg)
     } else if (strcmp(key, "model") == 0) {
       need(1);
       model_name_ = arg[iarg + 1];
-      if (model_name_ != "auto" && model_name_ != "isotropic" && model_name_ != "local" && model_name_ != "nonlocal") {
+      if (model_name_ != "auto" && model_name_ != "isotropic" && model_name_ != "local" && model_name_ != "nonlocal" &&
+          model_name_ != "twoway") {
         char msg[256];
         std::snprintf(msg, sizeof(msg),
-                      "fix hele_shaw/drag: unknown model '%s' (expected isotropic, local, nonlocal or auto)",
+                      "fix hele_shaw/drag: unknown model '%s' (expected isotropic, local, nonlocal, twoway or auto)",
                       model_name_.c_str());
         error->all(FLERR, msg);
       }
+      iarg += 2;
+    } else if (strcmp(key, "window_cells") == 0) {
+      need(1);
+      window_.cells_per_diameter = parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 1]);
+      if (!(window_.cells_per_diameter >= 2.0 && window_.cells_per_diameter <= 16.0))
+        error->all(FLERR, "fix hele_shaw/drag: window_cells must be in [2, 16] cells per sphere diameter");
+      iarg += 2;
+    } else if (strcmp(key, "window_margin") == 0 || strcmp(key, "window_update") == 0) {
+      need(1);
+      const double value = parse_number(error, "fix hele_shaw/drag", key, arg[iarg + 1]);
+      if (!(value > 0.0)) {
+        char msg[128];
+        std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s must be > 0 m", key);
+        error->all(FLERR, msg);
+      }
+      if (key[7] == 'm') window_.margin = value;
+      else window_.update_distance = value;
+      iarg += 2;
+    } else if (strcmp(key, "window_every") == 0) {
+      need(1);
+      window_.update_every = parse_integer(error, "fix hele_shaw/drag", key, arg[iarg + 1]);
+      if (window_.update_every < 0) error->all(FLERR, "fix hele_shaw/drag: window_every must be >= 0 steps");
       iarg += 2;
     } else if (strcmp(key, "tolerance") == 0) {
       need(1);
@@ -165,7 +192,8 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *lmp, int narg, char **arg)
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix hele_shaw/drag command: unknown keyword '%s' (expected channel, origin, pore, "
                     "cylinder, viscosity, fluid_density, mean_velocity, flow_rate, reynolds, model, tolerance, "
-                    "coefficients, section, inertia, timestep_check)", key);
+                    "coefficients, section, inertia, timestep_check, window_cells, window_margin, window_update, "
+                    "window_every)", key);
       error->all(FLERR, msg);
     }
   }
@@ -213,6 +241,11 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *lmp, int narg, char **arg)
 }
 
 FixHeleShawDrag::~FixHeleShawDrag() {
+  if (model_ && comm->me == 0) {
+    const std::string work = model_->work_summary();
+    if (!work.empty() && screen) fprintf(screen, "fix hele_shaw/drag: %s\n", work.c_str());
+    if (!work.empty() && logfile) fprintf(logfile, "fix hele_shaw/drag: %s\n", work.c_str());
+  }
   atom->delete_callback(id, 0);
   memory->destroy(hydro_force_);
 }
@@ -268,7 +301,7 @@ void FixHeleShawDrag::build_model(double d) {
     const hsrod::ConfinementTable table = coefficients_file_.empty()
                                               ? hsrod::ConfinementTable::default_table()
                                               : hsrod::ConfinementTable::read(coefficients_file_);
-    model_ = hsrod::make_hydrodynamic_model(name, {viscosity_, gap, d}, table);
+    model_ = hsrod::make_hydrodynamic_model(name, {viscosity_, gap, d}, table, window_);
     if (comm->me == 0) {
       char msg[512];
       std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: model %s (level %d), beta = %g, coefficients: %s\n",
@@ -308,6 +341,7 @@ std::string FixHeleShawDrag::choose_auto_level(double d) {
       hsrod::RodGeometry g;
       g.sphere_diameter = d;
       g.spheres_per_section = section_size_;
+      g.id = rod.first;
       for (const auto &s : rod.second) g.positions.push_back(s.position);
       hsrod::RodDrag drag;
       level3->evaluate(g, *flow_, drag);
@@ -352,6 +386,7 @@ void FixHeleShawDrag::check_explicit_limit() {
     hsrod::RodGeometry g;
     g.sphere_diameter = 2.0 * rod.second.front().radius;
     g.spheres_per_section = section_size_;
+    g.id = rod.first;
     for (const auto &s : rod.second) g.positions.push_back(s.position);
     hsrod::RodDrag drag;
     model_->evaluate(g, *flow_, drag);
@@ -403,6 +438,7 @@ void FixHeleShawDrag::post_force(int) {
     hsrod::RodGeometry g;
     g.sphere_diameter = 2.0 * rod.second.front().radius;
     g.spheres_per_section = section_size_;
+    g.id = rod.first;
     const int n = static_cast<int>(rod.second.size());
     Eigen::VectorXd v(3 * n);
     for (int k = 0; k < n; k++) {

@@ -17,6 +17,8 @@ FixStyle(hele_shaw/drag,FixHeleShawDrag)
 
 #include "fix.h"
 
+#include "hydro/twoway_window_options.h"
+
 #include <memory>
 #include <string>
 
@@ -66,6 +68,7 @@ class FixHeleShawDrag : public Fix {
   double gap_bottom_;             // z of the lower gap wall [m]
   double tolerance_;              // auto: accepted relative deflection error [-]
   std::string coefficients_file_; // "" = built-in defaults
+  hsrod::TwoWayWindowOptions window_;  // level 4 (twoway) window settings
   int section_size_;              // spheres per rod cross-section
   bool applied_by_integrator_;
   double **hydro_force_;          // per atom: last hydrodynamic force [N]

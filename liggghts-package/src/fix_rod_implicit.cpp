@@ -176,6 +176,7 @@ void FixRodImplicit::initial_integrate(int) {
     geometry.positions = rod.positions;
     geometry.sphere_diameter = 2.0 * spheres.front().radius;
     geometry.spheres_per_section = drag_->section_size();
+    geometry.id = entry.first;
     hsrod::RodDrag drag;
     drag_->model().evaluate(geometry, drag_->flow(), drag);
 

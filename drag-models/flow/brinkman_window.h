@@ -1,0 +1,93 @@
+// The depth-averaged Brinkman (Stokes-Brinkman) operator on a small window
+// of the planform, for the disturbance a rod makes in the background flow
+// (level 4 of the fidelity ladder, hydro/twoway_window_model.h).
+//
+// Solves, for the disturbance velocity u' (gap-averaged) and pressure p',
+//     mu lap(u') - (12 mu / H^2) u' - grad p' + f = 0,   div u' = 0,
+// with f [N/m^3] a force density given per velocity node, u' = 0 on the walls
+// and obstacles of the scene that cross the window and on the window's own
+// edges (the disturbance is taken to have decayed there; the window margin
+// sets that error, measured in tests/drag-models/hydro). Discretisation as
+// the background solver (brinkman_grid_solver.h): MAC grid, Shortley-Weller
+// no-slip at the true wall position; faces are closed where their node lies
+// in a wall (first order at curved walls, enough for a disturbance). The
+// system depends on the window and the walls only, so it is factorised once
+// per window placement and reused for any number of right-hand sides.
+#pragma once
+
+#include "geometry/channel_geometry.h"
+
+#include <Eigen/Core>
+#include <Eigen/KLUSupport>
+#include <Eigen/SparseCore>
+
+#include <memory>
+#include <vector>
+
+namespace hsrod {
+
+// A window of the planform: nx x ny square cells of size h [m], lower left
+// corner (x0, y0) [m]. Nodes as in mac_grid.h: u(i, j) at (x0 + i h,
+// y0 + (j + 1/2) h), v(i, j) at (x0 + (i + 1/2) h, y0 + j h).
+struct WindowLattice {
+  double x0 = 0.0, y0 = 0.0;  // m
+  double h = 0.0;             // m
+  int nx = 0, ny = 0;
+  Eigen::Vector2d u_position(int i, int j) const { return {x0 + i * h, y0 + (j + 0.5) * h}; }
+  Eigen::Vector2d v_position(int i, int j) const { return {x0 + (i + 0.5) * h, y0 + j * h}; }
+  bool operator==(const WindowLattice& o) const {
+    return x0 == o.x0 && y0 == o.y0 && h == o.h && nx == o.nx && ny == o.ny;
+  }
+};
+
+// One velocity unknown of the window system.
+struct WindowNode {
+  Eigen::Vector2d position;  // m
+  int component = 0;         // 0: u (x-velocity), 1: v (y-velocity)
+  int unknown = -1;          // row/column in the system
+};
+
+class BrinkmanWindow {
+ public:
+  // Factorises the window system. Throws std::invalid_argument for a lattice
+  // with fewer than 3 x 3 cells or a non-positive cell size or viscosity,
+  // std::runtime_error if the factorisation fails.
+  BrinkmanWindow(const ChannelGeometry& geometry, const WindowLattice& lattice, double viscosity);
+  BrinkmanWindow(const BrinkmanWindow&) = default;
+
+  const WindowLattice& lattice() const { return lattice_; }
+  // Fluid velocity nodes (the unknowns), u nodes first.
+  const std::vector<WindowNode>& nodes() const { return nodes_; }
+  int unknowns() const { return unknowns_; }
+  // Index into nodes() of the fluid velocity nodes of one component within
+  // `radius` [m] of `centre` [m].
+  std::vector<int> nodes_near(const Eigen::Vector2d& centre, double radius, int component) const;
+
+  // True when a wall or obstacle crosses the window. A window without one is
+  // the same system wherever it lies: translated() reuses its factorisation.
+  bool has_walls() const { return has_walls_; }
+  // This window moved by (dx, dy) [m], sharing the factorisation. Only for
+  // windows without walls (std::logic_error otherwise), and the caller must
+  // know the translated window is wall-free too.
+  BrinkmanWindow translated(double dx, double dy) const;
+
+  // Disturbance velocities [m/s] at all nodes() for each column of
+  // `node_forces`: the force [N] applied to the fluid at each node (rows as
+  // nodes()), spread uniformly over the node's cell area and the gap height.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& node_forces) const;
+
+ private:
+  WindowLattice lattice_;
+  double gap_height_;  // H [m]
+  double viscosity_;   // mu [Pa s]
+  std::vector<WindowNode> nodes_;
+  std::vector<int> u_unknown_, v_unknown_;  // per lattice node, -1 if not fluid
+  int unknowns_ = 0;
+  bool has_walls_ = false;
+  // Sparse LU (SuiteSparse KLU): about 2x faster to factorise and 4x faster
+  // to solve than Eigen's SparseLU on these systems (flow/README.md).
+  using Factorisation = Eigen::KLU<Eigen::SparseMatrix<double>>;
+  std::shared_ptr<const Factorisation> lu_;
+};
+
+}  // namespace hsrod

@@ -1,0 +1,290 @@
+#include "hydro/twoway_window_model.h"
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace hsrod {
+
+namespace {
+constexpr double kMidplaneFactor = 1.5;  // mid-plane over gap-averaged velocity (parabolic profile)
+
+// Peskin's 4-point regularised delta function (Peskin, Acta Numerica 11, 2002), r in
+// cells: sum_j phi(r - j) = 1, sum_j (r - j) phi(r - j) = 0 and
+// sum_j phi(r - j)^2 = 3/8 for every r.
+double peskin_kernel(double r) {
+  r = std::abs(r);
+  if (r < 1.0) return (3.0 - 2.0 * r + std::sqrt(1.0 + 4.0 * r - 4.0 * r * r)) / 8.0;
+  if (r < 2.0) return (5.0 - 2.0 * r - std::sqrt(std::max(0.0, -7.0 + 12.0 * r - 4.0 * r * r))) / 8.0;
+  return 0.0;
+}
+}  // namespace
+
+TwoWayWindowModel::TwoWayWindowModel(const HydrodynamicParameters& p, const ConfinementTable& table,
+                                     const TwoWayWindowOptions& options)
+    : LocalDragBase(p, table), options_(options) {
+  if (!(options_.cells_per_diameter >= 2.0) || options_.cells_per_diameter > 16.0)
+    throw std::invalid_argument("twoway: cells per diameter must be in [2, 16]");
+  if (options_.margin < 0.0) throw std::invalid_argument("twoway: window margin must be >= 0 m");
+  if (options_.update_distance < 0.0) throw std::invalid_argument("twoway: update distance must be >= 0 m");
+  if (options_.update_every < 0) throw std::invalid_argument("twoway: update interval must be >= 0 steps");
+  const double d = p.sphere_diameter;
+  if (options_.update_distance == 0.0) options_.update_distance = 0.25 * d;
+  spacing_ = d / options_.cells_per_diameter;
+  obstruction_ = LocalDragBase::obstruction_friction();
+  film_friction_ = sphere_friction_ - obstruction_;
+  free_self_mobility_ = measure_free_self_mobility();
+  if (!(kMidplaneFactor * free_self_mobility_ < 1.0 / obstruction_)) {
+    throw std::invalid_argument(
+        "twoway: the footprint of a sphere on the window grid is more mobile than the sphere allows "
+        "(c m_free = " + std::to_string(kMidplaneFactor * free_self_mobility_) + " >= 1/zeta_o = " +
+        std::to_string(1.0 / obstruction_) + " m/(N s)); refine the grid (cells per diameter)");
+  }
+}
+
+double TwoWayWindowModel::margin_for(double rod_extent) const {
+  if (options_.margin > 0.0) return options_.margin;
+  const double screening = parameters_.gap_height / std::sqrt(12.0);
+  return std::max({4.0 * screening, 0.5 * rod_extent, 2.0 * parameters_.sphere_diameter});
+}
+
+// Self-mobility of one footprint on the lattice in free space (a straight
+// channel far wider than the window), averaged over sub-cell positions and
+// the two in-plane directions.
+double TwoWayWindowModel::measure_free_self_mobility() const {
+  const double h = spacing_, r = footprint_radius();
+  const double half = margin_for(2.0 * r) + r;
+  const int cells = 2 * static_cast<int>(std::ceil(half / h));
+  const double side = 100.0 * cells * h;
+  const ChannelGeometry open(side, side, parameters_.gap_height, -0.5 * side, -0.5 * side);
+  WindowLattice lattice;
+  lattice.h = h;
+  lattice.nx = lattice.ny = cells;
+  lattice.x0 = lattice.y0 = -0.5 * cells * h;
+  const BrinkmanWindow window(open, lattice, parameters_.viscosity);
+  double sum = 0.0;
+  int samples = 0;
+  for (double ox : {0.0, 0.25, 0.5})
+    for (double oy : {0.0, 0.25, 0.5}) {
+      const Footprint f = footprint(window, Eigen::Vector3d(ox * h, oy * h, 0.0));
+      for (int a = 0; a < 2; ++a) {
+        Eigen::MatrixXd force = Eigen::MatrixXd::Zero(window.unknowns(), 1);
+        for (std::size_t k = 0; k < f.nodes[a].size(); ++k) force(f.nodes[a][k], 0) = f.weights[a][k];
+        const Eigen::MatrixXd u = window.solve(force);
+        for (std::size_t k = 0; k < f.nodes[a].size(); ++k) sum += f.weights[a][k] * u(f.nodes[a][k], 0);
+        ++samples;
+      }
+    }
+  return sum / samples;
+}
+
+TwoWayWindowModel::Footprint TwoWayWindowModel::footprint(const BrinkmanWindow& window,
+                                                          const Eigen::Vector3d& centre) const {
+  Footprint f;
+  const double h = spacing_;
+  const Eigen::Vector2d c = centre.head<2>();
+  for (int a = 0; a < 2; ++a) {
+    double total = 0.0;
+    for (int k : window.nodes_near(c, 2.0 * std::sqrt(2.0) * h, a)) {
+      const Eigen::Vector2d r = (window.nodes()[k].position - c) / h;
+      const double w = peskin_kernel(r.x()) * peskin_kernel(r.y());
+      if (w <= 0.0) continue;
+      f.nodes[a].push_back(k);
+      f.weights[a].push_back(w);
+      total += w;
+    }
+    // Near a wall some nodes are missing: the force stays on the fluid ones.
+    for (double& w : f.weights[a]) w /= total;
+  }
+  return f;
+}
+
+// No wall or obstacle within a cell of the window rectangle (then the window
+// system is that of free space, the same for every such placement).
+bool TwoWayWindowModel::window_clear_of_walls(const WindowLattice& g, const ChannelGeometry& geometry) {
+  const double x0 = g.x0 - g.h, x1 = g.x0 + (g.nx + 1) * g.h;
+  const double y0 = g.y0 - g.h, y1 = g.y0 + (g.ny + 1) * g.h;
+  if (y0 <= geometry.y_lo() || y1 >= geometry.y_hi()) return false;
+  for (const ZCylinder& c : geometry.cylinders()) {
+    const double dx = std::max({x0 - c.center_x, 0.0, c.center_x - x1});
+    const double dy = std::max({y0 - c.center_y, 0.0, c.center_y - y1});
+    if (c.radius > 0.0 && std::hypot(dx, dy) <= c.radius) return false;
+  }
+  return true;
+}
+
+void TwoWayWindowModel::place_window(const RodGeometry& rod, const ChannelGeometry& geometry, RodState& state) const {
+  Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (const auto& x : rod.positions) {
+    lo = lo.cwiseMin(x.head<2>());
+    hi = hi.cwiseMax(x.head<2>());
+  }
+  const double r = footprint_radius(), h = spacing_;
+  const double reach = margin_for((hi - lo).maxCoeff() + 2.0 * r) + r;
+  // Lattice anchored at the planform corner, so that windows placed at
+  // different times share their nodes (the footprints vary continuously).
+  const long i0 = static_cast<long>(std::floor((lo.x() - reach - geometry.x_lo()) / h));
+  const long i1 = static_cast<long>(std::ceil((hi.x() + reach - geometry.x_lo()) / h));
+  long j0 = static_cast<long>(std::floor((lo.y() - reach - geometry.y_lo()) / h));
+  long j1 = static_cast<long>(std::ceil((hi.y() + reach - geometry.y_lo()) / h));
+  j0 = std::max(j0, 0L);  // no disturbance beyond the side walls
+  j1 = std::min(j1, static_cast<long>(std::ceil(geometry.width() / h)));
+  WindowLattice lattice;
+  lattice.h = h;
+  lattice.x0 = geometry.x_lo() + i0 * h;
+  lattice.y0 = geometry.y_lo() + j0 * h;
+  lattice.nx = static_cast<int>(i1 - i0);
+  lattice.ny = static_cast<int>(j1 - j0);
+  const long cells = static_cast<long>(lattice.nx) * lattice.ny;
+  if (cells > options_.max_window_cells)
+    throw std::invalid_argument("twoway: window of " + std::to_string(cells) + " cells exceeds the limit of " +
+                                std::to_string(options_.max_window_cells) +
+                                " (coarser grid, smaller margin or shorter rod)");
+  ++stats_.placements;
+  stats_.last_window_cells = static_cast<int>(cells);
+  const bool clear = window_clear_of_walls(lattice, geometry);
+  const auto cached = free_windows_.find({lattice.nx, lattice.ny});
+  if (clear && cached != free_windows_.end()) {
+    const WindowLattice& g = cached->second->lattice();
+    state.window = std::make_unique<BrinkmanWindow>(cached->second->translated(lattice.x0 - g.x0, lattice.y0 - g.y0));
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  state.window = std::make_unique<BrinkmanWindow>(geometry, lattice, parameters_.viscosity);
+  ++stats_.factorisations;
+  stats_.factorisation_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (clear && !state.window->has_walls())
+    free_windows_[{lattice.nx, lattice.ny}] = std::make_shared<const BrinkmanWindow>(*state.window);
+}
+
+// The rod still lies in the inner part of its window: at least half the
+// margin from every edge that is not beyond a side wall.
+bool TwoWayWindowModel::window_holds(const RodGeometry& rod, const ChannelGeometry& geometry,
+                                     const BrinkmanWindow& window) const {
+  const WindowLattice& g = window.lattice();
+  Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (const auto& x : rod.positions) {
+    lo = lo.cwiseMin(x.head<2>());
+    hi = hi.cwiseMax(x.head<2>());
+  }
+  const double r = footprint_radius();
+  const double keep = 0.5 * margin_for((hi - lo).maxCoeff() + 2.0 * r) + r;
+  const double x1 = g.x0 + g.nx * g.h, y1 = g.y0 + g.ny * g.h;
+  const bool lower_wall = g.y0 <= geometry.y_lo() + 1e-9 * g.h;
+  const bool upper_wall = y1 >= geometry.y_hi() - 1e-9 * g.h;
+  return lo.x() - keep >= g.x0 && hi.x() + keep <= x1 && (lower_wall || lo.y() - keep >= g.y0) &&
+         (upper_wall || hi.y() + keep <= y1);
+}
+
+// R_o = (I / zeta_o + c (M - m_free I))^-1 from the window's footprint mobility M.
+void TwoWayWindowModel::update_resistance(const RodGeometry& rod, RodState& state) const {
+  const BrinkmanWindow& window = *state.window;
+  const int n = rod.size();
+  std::vector<Footprint> prints;
+  prints.reserve(n);
+  for (const auto& x : rod.positions) prints.push_back(footprint(window, x));
+  Eigen::MatrixXd forces = Eigen::MatrixXd::Zero(window.unknowns(), 2 * n);
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < 2; ++a)
+      for (std::size_t k = 0; k < prints[i].nodes[a].size(); ++k)
+        forces(prints[i].nodes[a][k], 2 * i + a) = prints[i].weights[a][k];
+  const auto start = std::chrono::steady_clock::now();
+  const Eigen::MatrixXd velocity = window.solve(forces);
+  stats_.solve_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  Eigen::MatrixXd mobility(2 * n, 2 * n);
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < 2; ++a) {
+      const int row = 2 * i + a;
+      if (prints[i].nodes[a].empty()) {  // footprint off the grid: isolated sphere
+        mobility.row(row).setZero();
+        mobility(row, row) = free_self_mobility_;
+        continue;
+      }
+      for (int col = 0; col < 2 * n; ++col) {
+        double m = 0.0;
+        for (std::size_t k = 0; k < prints[i].nodes[a].size(); ++k)
+          m += prints[i].weights[a][k] * velocity(prints[i].nodes[a][k], col);
+        mobility(row, col) = m;
+      }
+    }
+  // Reciprocity holds for the continuous problem; the wall stencils make the
+  // discrete M slightly non-symmetric.
+  mobility = 0.5 * (mobility + mobility.transpose()).eval();
+  Eigen::MatrixXd a = kMidplaneFactor * mobility;
+  a.diagonal().array() += 1.0 / obstruction_ - kMidplaneFactor * free_self_mobility_;
+  Eigen::LLT<Eigen::MatrixXd> llt(a);
+  if (llt.info() != Eigen::Success)
+    throw std::runtime_error("twoway: the rod's obstruction matrix is not positive definite "
+                             "(a sphere too close to a wall for the window grid; refine it)");
+  state.obstruction = llt.solve(Eigen::MatrixXd::Identity(2 * n, 2 * n));
+  state.solved_positions = rod.positions;
+  state.evaluations_since_update = 0;
+  ++stats_.updates;
+}
+
+std::string TwoWayWindowModel::work_summary() const {
+  char line[320];
+  std::snprintf(line, sizeof(line),
+                "twoway: %ld evaluations, %ld resistance updates (%.3g s of solves), %ld window placements, "
+                "%ld factorisations (%.3g s), last window %d cells of %.3g m",
+                stats_.evaluations, stats_.updates, stats_.solve_seconds, stats_.placements, stats_.factorisations,
+                stats_.factorisation_seconds, stats_.last_window_cells, spacing_);
+  return line;
+}
+
+void TwoWayWindowModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
+  ++stats_.evaluations;
+  if (std::abs(flow.geometry().gap_height() - parameters_.gap_height) > 1e-9 * parameters_.gap_height)
+    throw std::invalid_argument("twoway: the flow's gap height differs from the model's");
+  const int n = rod.size();
+  RodState& state = rods_[rod.id];
+  bool update = !state.window || static_cast<int>(state.solved_positions.size()) != n ||
+                (options_.update_every > 0 && state.evaluations_since_update >= options_.update_every);
+  for (int i = 0; !update && i < n; ++i)
+    update = (rod.positions[i] - state.solved_positions[i]).head<2>().norm() > options_.update_distance;
+  if (update) {
+    if (!state.window || !window_holds(rod, flow.geometry(), *state.window)) place_window(rod, flow.geometry(), state);
+    update_resistance(rod, state);
+  } else {
+    ++state.evaluations_since_update;
+  }
+
+  // Footprint-averaged background flow at the current positions.
+  Eigen::VectorXd background(2 * n);
+  for (int i = 0; i < n; ++i) {
+    const Footprint f = footprint(*state.window, rod.positions[i]);
+    for (int a = 0; a < 2; ++a) {
+      if (f.nodes[a].empty()) {
+        background[2 * i + a] = flow.velocity(rod.positions[i].x(), rod.positions[i].y())[a];
+        continue;
+      }
+      double u = 0.0;
+      for (std::size_t k = 0; k < f.nodes[a].size(); ++k) {
+        const Eigen::Vector2d& p = state.window->nodes()[f.nodes[a][k]].position;
+        u += f.weights[a][k] * flow.velocity(p.x(), p.y())[a];
+      }
+      background[2 * i + a] = u;
+    }
+  }
+  const Eigen::VectorXd driving = kMidplaneFactor * (state.obstruction * background);
+
+  out.resize(n);
+  out.coupled_resistance = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < n; ++k)
+      out.coupled_resistance.block<2, 2>(3 * i, 3 * k) = state.obstruction.block<2, 2>(2 * i, 2 * k);
+    out.coupled_resistance(3 * i, 3 * i) += film_friction_;
+    out.coupled_resistance(3 * i + 1, 3 * i + 1) += film_friction_;
+    out.coupled_resistance(3 * i + 2, 3 * i + 2) = sphere_friction_;
+    out.driving_force[i] = Eigen::Vector3d(driving[2 * i], driving[2 * i + 1], 0.0);
+    out.resistance[i] = out.coupled_resistance.block<3, 3>(3 * i, 3 * i);
+  }
+  add_rotation(rod, flow, out);
+}
+
+}  // namespace hsrod

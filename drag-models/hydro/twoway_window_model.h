@@ -1,0 +1,113 @@
+// Level 4 of the fidelity ladder (DESIGN.md): two-way gap-averaged Brinkman.
+// The rod is a moving obstacle in the planform flow, solved on a window
+// around it that includes the scene's walls and obstacles (the pore), so the
+// interaction of the spheres with each other and with the walls comes from
+// the same depth-averaged Brinkman equations as the background flow
+// (Nagel et al., J. Fluid Mech. 835, 2018, treat a confined fibre as a
+// region of the gap-averaged flow in the same spirit).
+//
+// Each sphere keeps level 3's split of its confined friction zeta(beta)
+// into film friction zeta_f (with the gap walls, its own velocity only) and
+// obstruction friction zeta_o (nonlocal_model.h). The obstruction force
+// P_i is exerted on the window flow spread over the sphere's footprint (the
+// 4-point kernel of Peskin, Acta Numerica 11, 2002, on the window lattice:
+// its weights sum to one and its self-interaction barely depends on where
+// the sphere sits relative to the nodes), and the sphere sees the
+// footprint average <u> of the total flow:
+//     P_i = zeta_o (c <u>_i - v_i),   <u> = <u_bg> - M P,
+// where M [m/(N s)] is the window's mobility between footprints (one sparse
+// factorisation of the window operator, 2n solves per update) and c = 3/2
+// the mid-plane factor. The footprint's self-mobility on the grid is not a
+// sphere's: it is replaced by the sphere's own (1/zeta_o), removing the
+// self term m_free of an isolated footprint in free space, measured at
+// construction on the same lattice. Hence
+//     R_o = (I / zeta_o + c (M - m_free I))^-1,   F = c R_o <u_bg> - (zeta_f + R_o) v,
+// which reduces to level 1 for an isolated sphere far from walls and to
+// level 3 (with the point Green's function) for distant spheres, while near
+// neighbours interact through finite footprints and the walls reflect the
+// disturbance. Out-of-plane (z) motion keeps the isolated friction zeta.
+//
+// Cost control ("solved every k steps"): the resistance R_o is recomputed
+// only when a sphere has moved more than `update_distance` since the last
+// solve (or after `update_every` evaluations); the window is re-placed (and
+// re-factorised) only when the rod leaves its inner part. Between updates
+// the driving uses the current background flow with the stored R_o.
+#pragma once
+
+#include "flow/brinkman_window.h"
+#include "hydro/local_models.h"
+#include "hydro/twoway_window_options.h"
+
+#include <algorithm>
+#include <map>
+#include <memory>
+
+namespace hsrod {
+
+
+// Counters of the work a level-4 model did (tests and benchmarks read them).
+struct TwoWayWindowStatistics {
+  long evaluations = 0;      // evaluate() calls
+  long updates = 0;          // resistance re-solves (2n sparse solves each)
+  long placements = 0;       // window placements
+  long factorisations = 0;   // sparse LU factorisations (wall-free placements reuse one)
+  int last_window_cells = 0;
+  double factorisation_seconds = 0.0;  // wall time in window factorisations [s]
+  double solve_seconds = 0.0;          // wall time in the 2n solves of the updates [s]
+};
+
+class TwoWayWindowModel : public LocalDragBase {
+ public:
+  TwoWayWindowModel(const HydrodynamicParameters& parameters, const ConfinementTable& table,
+                    const TwoWayWindowOptions& options = {});
+  std::string name() const override { return "twoway"; }
+  int level() const override { return 4; }
+  // Keeps per-rod state (window, resistance) keyed by RodGeometry::id.
+  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const override;
+
+  double film_friction() const { return film_friction_; }  // zeta_f [N s/m]
+  double free_self_mobility() const { return free_self_mobility_; }  // m_free [m/(N s)]
+  double lattice_spacing() const { return spacing_; }                // h [m]
+  // Half-width of the square over which a sphere's force is spread [m]: the
+  // support 2h of the 4-point kernel.
+  double footprint_radius() const { return 2.0 * spacing_; }
+  // Window margin [m] for a rod of planform extent `rod_extent` [m]:
+  // options.margin if set, else max(4 l, extent / 2, 2 d) with l = H / sqrt(12)
+  // (the screened near field has decayed to e^-4 at 4 l; the Hele-Shaw dipole
+  // far field of the rod falls off over its own length).
+  double margin_for(double rod_extent) const;
+  const TwoWayWindowStatistics& statistics() const { return stats_; }
+  std::string work_summary() const override;
+
+ private:
+  struct Footprint {
+    std::vector<int> nodes[2];       // window unknowns per component (x, y)
+    std::vector<double> weights[2];  // normalised to sum 1
+  };
+  struct RodState {
+    std::unique_ptr<BrinkmanWindow> window;
+    std::vector<Eigen::Vector3d> solved_positions;  // at the last update
+    Eigen::MatrixXd obstruction;                    // R_o, in-plane (2n x 2n) [N s/m]
+    int evaluations_since_update = 0;
+  };
+
+  Footprint footprint(const BrinkmanWindow& window, const Eigen::Vector3d& centre) const;
+  void place_window(const RodGeometry& rod, const ChannelGeometry& geometry, RodState& state) const;
+  bool window_holds(const RodGeometry& rod, const ChannelGeometry& geometry, const BrinkmanWindow& window) const;
+  static bool window_clear_of_walls(const WindowLattice& lattice, const ChannelGeometry& geometry);
+  void update_resistance(const RodGeometry& rod, RodState& state) const;
+  double measure_free_self_mobility() const;
+
+  TwoWayWindowOptions options_;
+  double spacing_;             // h [m]
+  double film_friction_;       // zeta_f [N s/m]
+  double obstruction_;         // zeta_o [N s/m]
+  double free_self_mobility_;  // m_free [m/(N s)]
+  mutable std::map<int, RodState> rods_;
+  // Wall-free windows by size (nx, ny): any wall-free placement of that size
+  // is the same system, translated (no new factorisation).
+  mutable std::map<std::pair<int, int>, std::shared_ptr<const BrinkmanWindow>> free_windows_;
+  mutable TwoWayWindowStatistics stats_;
+};
+
+}  // namespace hsrod

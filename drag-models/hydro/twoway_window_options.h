@@ -1,0 +1,15 @@
+// Settings of the level-4 model (hydro/twoway_window_model.h), in a header
+// of their own so that adapters can hold them without the solver headers.
+#pragma once
+
+namespace hsrod {
+
+struct TwoWayWindowOptions {
+  double cells_per_diameter = 3.0;  // lattice spacing h = d / cells_per_diameter [-]
+  double margin = 0.0;              // window margin around the rod [m]; 0: auto (see margin_for)
+  double update_distance = 0.0;     // re-solve after this sphere displacement [m]; 0: d / 4
+  int update_every = 0;             // also re-solve after this many evaluations; 0: never by count
+  long max_window_cells = 400000;   // larger windows are refused (std::invalid_argument)
+};
+
+}  // namespace hsrod

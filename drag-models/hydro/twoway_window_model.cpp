@@ -34,7 +34,7 @@ TwoWayWindowModel::TwoWayWindowModel(const HydrodynamicParameters& p, const Conf
   if (options_.update_distance < 0.0) throw std::invalid_argument("twoway: update distance must be >= 0 m");
   if (options_.update_every < 0) throw std::invalid_argument("twoway: update interval must be >= 0 steps");
   const double d = p.sphere_diameter;
-  if (options_.update_distance == 0.0) options_.update_distance = 0.25 * d;
+  if (options_.update_distance == 0.0) options_.update_distance = 0.5 * d;
   spacing_ = d / options_.cells_per_diameter;
   obstruction_ = LocalDragBase::obstruction_friction();
   film_friction_ = sphere_friction_ - obstruction_;
@@ -128,10 +128,12 @@ void TwoWayWindowModel::place_window(const RodGeometry& rod, const ChannelGeomet
   const double reach = margin_for((hi - lo).maxCoeff() + 2.0 * r) + r;
   // Lattice anchored at the planform corner, so that windows placed at
   // different times share their nodes (the footprints vary continuously).
+  // The size depends on the rod's extent only (not on where it sits on the
+  // lattice), so that wall-free placements of a rod share one system.
   const long i0 = static_cast<long>(std::floor((lo.x() - reach - geometry.x_lo()) / h));
-  const long i1 = static_cast<long>(std::ceil((hi.x() + reach - geometry.x_lo()) / h));
+  const long i1 = i0 + 1 + static_cast<long>(std::ceil((hi.x() - lo.x() + 2.0 * reach) / h));
   long j0 = static_cast<long>(std::floor((lo.y() - reach - geometry.y_lo()) / h));
-  long j1 = static_cast<long>(std::ceil((hi.y() + reach - geometry.y_lo()) / h));
+  long j1 = j0 + 1 + static_cast<long>(std::ceil((hi.y() - lo.y() + 2.0 * reach) / h));
   j0 = std::max(j0, 0L);  // no disturbance beyond the side walls
   j1 = std::min(j1, static_cast<long>(std::ceil(geometry.width() / h)));
   WindowLattice lattice;

@@ -7,7 +7,7 @@ namespace hsrod {
 struct TwoWayWindowOptions {
   double cells_per_diameter = 3.0;  // lattice spacing h = d / cells_per_diameter [-]
   double margin = 0.0;              // window margin around the rod [m]; 0: auto (see margin_for)
-  double update_distance = 0.0;     // re-solve after this sphere displacement [m]; 0: d / 4
+  double update_distance = 0.0;     // re-solve after this sphere displacement [m]; 0: d / 2
   int update_every = 0;             // also re-solve after this many evaluations; 0: never by count
   long max_window_cells = 400000;   // larger windows are refused (std::invalid_argument)
 };

@@ -12,7 +12,7 @@
      model isotropic|local|nonlocal|twoway|auto   (default auto)
      window_cells c      twoway: grid cells per sphere diameter (default 3)
      window_margin m     twoway: window margin around the rod [m] (default auto)
-     window_update s     twoway: re-solve after a sphere moved s [m] (default d/4)
+     window_update s     twoway: re-solve after a sphere moved s [m] (default d/2)
      window_every k      twoway: re-solve at least every k steps (default 0: by distance only)
      tolerance t         auto: accepted relative deflection error (default 0.01)
      coefficients file   confinement coefficient table (default: built-in)

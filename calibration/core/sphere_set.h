@@ -21,6 +21,7 @@ using Vec3 = std::array<double, 3>;
 
 struct Sphere {
   long id = 0;          // user / LIGGGHTS atom id
+  long mol = 0;         // molecule (rod) id from the DEM side, 0 = none
   Vec3 x{};             // centre [m]
   Vec3 v{};             // translational velocity [m/s]
   Vec3 omega{};         // angular velocity [rad/s]

@@ -1,6 +1,8 @@
 // hsrod calibration: stability and cost report (see stability_report.h).
 #include "stability_report.h"
 
+#include "momentum_exchange.h"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -70,26 +72,58 @@ Report make_report(const RunParameters& p) {
       << p.coupling_interval << " DEM steps)\n";
     if (r.tau_p > 0) {
       r.solid_fluid_ratio = r.dt_couple / r.tau_p;
+      const bool semi = p.coupled && p.semi_implicit;
       t << "  solid-fluid  dt_c / tau_p         " << fmt("%8.3g", r.solid_fluid_ratio)
-        << "   (stable < 2, accurate <= 1)\n";
-      if (r.solid_fluid_ratio >= 2.0) {
+        << (semi ? "   (semi-implicit drag: accurate <= 1)\n" : "   (stable < 2, accurate <= 1)\n");
+      if (!semi && r.solid_fluid_ratio >= 2.0) {
         r.errors.push_back("coupling interval breaks the solid-fluid criterion: dt_c/tau_p = " +
-                           fmt("%.3g", r.solid_fluid_ratio) + " >= 2 (reduce the coupling interval)");
+                           fmt("%.3g", r.solid_fluid_ratio) +
+                           " >= 2 (reduce the coupling interval or use exchange semiImplicit)");
       } else if (r.solid_fluid_ratio > 1.0) {
-        r.warnings.push_back("dt_c/tau_p above 1: drag exchange under-resolved");
+        r.warnings.push_back("dt_c/tau_p above 1: the lagged part of the load is under-resolved");
       }
     }
     if (p.coupled && r.tau_p > 0 && p.h_sphere > 0 && p.d_min > 0) {
+      // per sphere of the smallest diameter (momentum_exchange.h)
+      const double pi = 3.14159265358979323846;
+      const double mu = p.rho_f * p.nu;
+      const double vol = pi * p.d_min * p.d_min * p.d_min / 6.0;
+      const double mass = p.rho_p * vol, mf = p.rho_f * vol;
+      const double zeta0 = 3.0 * pi * mu * p.d_min;
       const double shell = std::pow(1.0 + p.h_sphere / p.d_min, 3) - 1.0;
-      r.amplification = r.solid_fluid_ratio + (0.5 + shell) / r.density_ratio;
-      t << "  explicit coupling gain G          " << fmt("%8.3g", r.amplification)
-        << "   (dt_c/tau_p + (1/2 + shell) rho_f/rho_p; stable < 1)\n";
+      r.reaction_coeff = acceleration_reaction_coeff(p.d_min, p.h_sphere, p.nu, r.dt_couple);
+      const double c = r.reaction_coeff;
+      const ExchangeGain ex = exchange_worst_gain(mass, mf, zeta0, c, 0.0, 0.0, r.dt_couple);
+      const ExchangeGain chosen =
+          p.semi_implicit ? exchange_worst_gain(mass, mf, zeta0, c, p.drag_factor * zeta0,
+                                                p.virtual_mass_coeff * mf, r.dt_couple)
+                          : ex;
+      r.amplification_explicit = ex.radius;
+      r.amplification = chosen.radius;
+      r.oscillation = chosen.oscillation;
+      t << "  acceleration reaction c           " << fmt("%8.3g", c)
+        << " rho_f V   (1/2 + shell " << fmt("%.3g", shell) << " + Basset 9 sqrt(nu dt_c/pi)/a)\n";
+      t << "  exchange " << (p.semi_implicit ? "semi-implicit" : "explicit     ")
+        << " gain             " << fmt("%8.3g", r.amplification)
+        << "   (spectral radius per coupling interval, worst case; stable < 1)\n";
+      t << "  exchange oscillatory root         " << fmt("%8.3g", r.oscillation)
+        << "   (interval-to-interval oscillation; warning > 0.7)\n";
+      if (p.semi_implicit) {
+        t << "    Ksl = " << fmt("%.3g", p.drag_factor) << " x 3 pi mu d, virtual mass "
+          << fmt("%.3g", p.virtual_mass_coeff) << " rho_f V; explicit exchange would give "
+          << fmt("%.3g", r.amplification_explicit) << '\n';
+      }
       if (r.amplification >= 1.0) {
-        r.errors.push_back("explicit coupling unstable: G = " + fmt("%.3g", r.amplification) +
-                           " >= 1 (light particles / coarse mesh / long coupling interval: raise d/h, "
-                           "shorten the coupling interval, or set allowUnstableCoupling)");
-      } else if (r.amplification > 0.7) {
-        r.warnings.push_back("explicit coupling gain G above 0.7: expect slowly damped oscillations");
+        r.errors.push_back(
+            std::string(p.semi_implicit ? "semi-implicit" : "explicit") + " coupling unstable: gain " +
+            fmt("%.3g", r.amplification) +
+            " >= 1 (light particles / coarse mesh / long coupling interval: " +
+            (p.semi_implicit ? "set virtualMassCoeff near c, check dragFactor, "
+                             : "use exchange semiImplicit, raise d/h, ") +
+            "shorten the coupling interval, or set allowUnstableCoupling)");
+      } else if (r.oscillation > 0.7) {
+        r.warnings.push_back("exchange oscillatory root " + fmt("%.3g", r.oscillation) +
+                             " above 0.7: expect slowly damped oscillations");
       }
     }
     if (p.h_sphere > 0) {

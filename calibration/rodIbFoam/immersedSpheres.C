@@ -177,7 +177,10 @@ void immersedSpheres::checkAndReport(const hsrod::calib::RunParameters& base)
     p.h_sphere = cellSizeAtSpheres();
     p.min_cells_per_diameter = minCellsPerDiameter_;
     p.coupled = spheres_.motion() == hsrod::calib::MotionMode::Coupled;
-    p.rho_p = dict_.lookupOrDefault<scalar>("rhoParticle", 0);
+    if (p.rho_p <= 0)   // coupled runs pass the DEM particles' density
+    {
+        p.rho_p = dict_.lookupOrDefault<scalar>("rhoParticle", 0);
+    }
     if (p.dt_dem <= 0)
     {
         p.dt_dem = dict_.lookupOrDefault<scalar>("demTimeStep", 0);
@@ -193,11 +196,11 @@ void immersedSpheres::checkAndReport(const hsrod::calib::RunParameters& base)
         bool onlyCoupling = true;
         for (const auto& e : rep.errors)
         {
-            onlyCoupling = onlyCoupling && e.find("explicit coupling unstable") != std::string::npos;
+            onlyCoupling = onlyCoupling && e.find("coupling unstable") != std::string::npos;
         }
         if (onlyCoupling)
         {
-            WarningInFunction << "allowUnstableCoupling: continuing despite G >= 1" << nl;
+            WarningInFunction << "allowUnstableCoupling: continuing despite an exchange gain >= 1" << nl;
             return;
         }
     }

@@ -16,13 +16,25 @@
                                      steadyTolerance { U 1e-7; p 1e-6; }
                                      (steady runs stop when initial
                                      residuals fall below these)
+ Coupled mode (motion coupled): LIGGGHTS moves the spheres, one CFD step per
+ coupling interval; momentum exchange `exchange explicit|semiImplicit`
+ (momentum_exchange.h: implicit drag on the DEM side plus virtual mass
+ `virtualMassCoeff` [-], default: the estimated acceleration reaction
+ 1/2 + forced shell + Basset impulse of one interval; `dragFactor` [-]).
  Outputs: postProcessing/rodIbFoam/sphereForces.csv (load on each sphere),
+          postProcessing/rodIbFoam/rodMeasures.csv (coupled mode with
+          `rodMeasures { channelWidth W; channelCentre y; meanVelocity U; }`:
+          the paper's eq. 1/2 angle, deflection, lateral position / W,
+          velocity / U per rod and coupling interval),
           postProcessing/rodIbFoam/patchFlux.csv (volumetric flux per patch,
           m^3/s), fields alphaSolid, U, p at write times.
 \*---------------------------------------------------------------------------*/
 #include "fvCFD.H"
 #include "pimpleControl.H"
 #include "immersedSpheres.H"
+
+#include "momentum_exchange.h"
+#include "rod_measures_csv.h"
 
 #include <fstream>
 #include <iomanip>
@@ -82,6 +94,26 @@ int main(int argc, char* argv[])
     const bool coupled = ib.spheres().motion() == hsrod::calib::MotionMode::Coupled;
     label nDem = 0;
     scalar dtDem = 0;
+    scalar rhoP = 0;                 // particle density from the DEM [kg/m^3]
+    bool semiImplicit = false;       // momentum exchange (momentum_exchange.h)
+    scalar virtualMassCoeff = 0;     // C_v [-]
+    scalar dragFactor = 1;           // K_d [-]
+    if (coupled)
+    {
+        const word ex = ib.dict().lookupOrDefault<word>("exchange", "explicit");
+        if (ex != "explicit" && ex != "semiImplicit")
+        {
+            FatalIOErrorInFunction(ib.dict())
+                << "exchange " << ex << " unknown; use explicit or semiImplicit"
+                << exit(FatalIOError);
+        }
+        semiImplicit = (ex == "semiImplicit");
+        dragFactor = ib.dict().lookupOrDefault<scalar>("dragFactor", 1.0);
+        if (!(dragFactor > 0))
+        {
+            FatalIOErrorInFunction(ib.dict()) << "dragFactor must be > 0" << exit(FatalIOError);
+        }
+    }
 #ifdef HSROD_WITH_DEM_COUPLING
     std::unique_ptr<hsrod::calib::DemCoupling> dem;
 #endif
@@ -115,6 +147,21 @@ int main(int argc, char* argv[])
                 << exit(FatalError);
         }
         dem->pull(ib.spheres());
+        const auto rhoRange = dem->density_range();
+        rhoP = rhoRange.first;
+        if (rhoRange.second > 1.001*rhoRange.first)
+        {
+            Info<< "coupled: particle densities " << rhoRange.first << " to "
+                << rhoRange.second << " kg/m^3; criteria use the lightest" << nl;
+        }
+        if (ibDict.found("rhoParticle")
+         && mag(ibDict.get<scalar>("rhoParticle") - rhoP) > 1e-3*rhoP)
+        {
+            FatalIOErrorInFunction(ibDict)
+                << "rhoParticle " << ibDict.get<scalar>("rhoParticle")
+                << " kg/m^3 disagrees with the DEM particles' density " << rhoP
+                << " kg/m^3 (rmass / (pi d^3/6)); fix the scene" << exit(FatalIOError);
+        }
         Info<< "coupled to LIGGGHTS: " << label(ib.spheres().size()) << " spheres, "
             << nDem << " DEM steps of " << dtDem << " s per CFD step" << nl;
 #else
@@ -127,6 +174,41 @@ int main(int argc, char* argv[])
 
     ib.updateBodies(runTime.value());
     ib.applyFarField(U);
+
+    std::unique_ptr<hsrod::calib::MomentumExchange> exchange;
+    if (coupled)
+    {
+        scalar dMin = GREAT;
+        for (const auto& s : ib.spheres().spheres()) dMin = min(dMin, s.d);
+        const scalar hS = ib.cellSizeAtSpheres();
+        // default C_v: the estimated acceleration reaction of one interval
+        // (added mass 1/2 + forced shell + Basset impulse; momentum_exchange.h)
+        const scalar c = hsrod::calib::acceleration_reaction_coeff
+        (
+            dMin, hS, nu.value(), runTime.deltaTValue()
+        );
+        virtualMassCoeff = semiImplicit
+            ? ib.dict().lookupOrDefault<scalar>("virtualMassCoeff", c) : 0;
+        if (virtualMassCoeff < 0)
+        {
+            FatalIOErrorInFunction(ib.dict()) << "virtualMassCoeff must be >= 0" << exit(FatalIOError);
+        }
+        hsrod::calib::ExchangeSettings es;
+        es.semi_implicit = semiImplicit;
+        es.virtual_mass_coeff = virtualMassCoeff;
+        es.drag_factor = dragFactor;
+        es.mu = nu.value()*rhoF;
+        es.rho_f = rhoF;
+        es.dt_couple = runTime.deltaTValue();
+        exchange.reset(new hsrod::calib::MomentumExchange(es));
+        Info<< "momentum exchange: " << (semiImplicit ? "semi-implicit" : "explicit");
+        if (semiImplicit)
+        {
+            Info<< " (Ksl = " << dragFactor << " x 3 pi mu d per DEM step, virtual mass "
+                << virtualMassCoeff << " rho_f V)";
+        }
+        Info<< nl;
+    }
 
     // ---- bad input and stability/cost report, before any time is spent ----
     const word ddtName(mesh.ddtScheme("ddt(U)")[0].wordToken());
@@ -159,9 +241,20 @@ int main(int argc, char* argv[])
         rp.consistent = pimple.dict().lookupOrDefault<bool>("consistent", false);
         rp.dt_dem = dtDem;
         rp.coupling_interval = nDem;
+        rp.semi_implicit = semiImplicit;
+        rp.virtual_mass_coeff = virtualMassCoeff;
+        rp.drag_factor = dragFactor;
+        rp.rho_p = rhoP;
         rp.max_courant = runTime.controlDict().lookupOrDefault<scalar>("maxCo", 1.0);
         ib.checkAndReport(rp);
     }
+#ifdef HSROD_WITH_DEM_COUPLING
+    if (dem && semiImplicit && virtualMassCoeff > 0)
+    {
+        // the DEM integrates with m_p + m_v from here on
+        dem->add_virtual_mass(virtualMassCoeff, rhoF);
+    }
+#endif
     if (args.found("checkOnly"))
     {
         Info<< "checkOnly: input accepted" << nl << "End" << nl;
@@ -175,6 +268,41 @@ int main(int argc, char* argv[])
     // relative change of the sphere loads per iteration, |F^n - F^n-1| / |F^n|
     const scalar tolF = steadyTol.lookupOrDefault<scalar>("F", 1e-7);
     std::vector<hsrod::calib::Vec3> prevF(ib.spheres().size());
+
+    // rod measures per coupling interval (coupled mode)
+    std::unique_ptr<std::ofstream> rodOut;
+    hsrod::calib::RodMeasureSettings rodSet;
+    if (coupled && ib.dict().found("rodMeasures"))
+    {
+        const dictionary& rm = ib.dict().subDict("rodMeasures");
+        rodSet.channel_width = rm.get<scalar>("channelWidth");
+        rodSet.channel_centre = rm.lookupOrDefault<scalar>("channelCentre", 0.5*rodSet.channel_width);
+        rodSet.mean_velocity = rm.lookupOrDefault<scalar>("meanVelocity", 0);
+        rodSet.section_size = rm.lookupOrDefault<label>("sectionSize", 1);
+        if (!(rodSet.channel_width > 0) || rodSet.section_size < 1)
+        {
+            FatalIOErrorInFunction(rm) << "rodMeasures: need channelWidth > 0, sectionSize >= 1"
+                << exit(FatalIOError);
+        }
+        if (Pstream::master())
+        {
+            const fileName dir =
+                runTime.rootPath()/runTime.globalCaseName()/"postProcessing"/"rodIbFoam";
+            mkDir(dir);
+            rodOut.reset(new std::ofstream(dir/"rodMeasures.csv"));
+            hsrod::calib::write_rod_measures_header(*rodOut);
+        }
+    }
+    auto writeRods = [&](scalar t)
+    {
+        if (!rodOut) return;
+        hsrod::calib::write_rod_measures
+        (
+            *rodOut, t, hsrod::calib::measure_rods(ib.spheres().spheres(), rodSet)
+        );
+        rodOut->flush();
+    };
+    writeRods(runTime.value());
 
     std::unique_ptr<std::ofstream> fluxOut;
     if (Pstream::master())
@@ -228,6 +356,7 @@ int main(int argc, char* argv[])
             // fluid step, then hands over the new sphere states
             dem->run(nDem);
             dem->pull(ib.spheres());
+            writeRods(runTime.value());
         }
 #endif
         ib.updateBodies(runTime.value());
@@ -313,7 +442,7 @@ int main(int argc, char* argv[])
 #ifdef HSROD_WITH_DEM_COUPLING
         if (dem)
         {
-            dem->push(ib.spheres(), Pstream::master());
+            dem->push(exchange->loads(ib.spheres().spheres()), Pstream::master(), semiImplicit);
         }
 #endif
 

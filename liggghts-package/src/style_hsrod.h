@@ -4,6 +4,7 @@
 // headers here.
 #include "compute_rod_shape.h"
 #include "create_rod.h"
+#include "fix_cfd_torque_implicit.h"
 #include "fix_hele_shaw_drag.h"
 #include "fix_rod_bonds.h"
 #include "fix_rod_implicit.h"

@@ -1,0 +1,163 @@
+// hsrod calibration: confinement coefficient fit (see confinement_fit.h).
+#include "confinement_fit.h"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace hsrod::calib {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const auto b = item.find_first_not_of(" \t\r");
+    const auto e = item.find_last_not_of(" \t\r");
+    out.push_back(b == std::string::npos ? "" : item.substr(b, e - b + 1));
+  }
+  return out;
+}
+
+double number(const std::string& s, const std::string& where) {
+  try {
+    std::size_t pos = 0;
+    const double v = std::stod(s, &pos);
+    if (pos != s.size()) throw std::invalid_argument(s);
+    return v;
+  } catch (const std::exception&) {
+    throw std::runtime_error(where + ": '" + s + "' is not a number");
+  }
+}
+}  // namespace
+
+std::vector<ForceSample> parse_force_samples(const std::string& text, const std::string& origin) {
+  std::istringstream in(text);
+  std::string line;
+  std::vector<std::string> header;
+  std::vector<ForceSample> out;
+  int lineno = 0;
+  const std::vector<std::string> need = {"beta", "body", "n_spheres", "d", "mu", "u_mean", "v", "force"};
+  std::map<std::string, std::size_t> col;
+  while (std::getline(in, line)) {
+    ++lineno;
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    const auto f = split(line);
+    const std::string where = origin + " line " + std::to_string(lineno);
+    if (header.empty()) {
+      header = f;
+      for (std::size_t k = 0; k < f.size(); ++k) col[f[k]] = k;
+      for (const auto& n : need)
+        if (!col.count(n)) throw std::runtime_error(where + ": header lacks column '" + n + "'");
+      continue;
+    }
+    if (f.size() != header.size()) throw std::runtime_error(where + ": wrong number of columns");
+    ForceSample s;
+    s.beta = number(f[col["beta"]], where);
+    const std::string body = f[col["body"]];
+    if (body == "sphere") s.body = FitBody::Sphere;
+    else if (body == "rod_parallel") s.body = FitBody::RodParallel;
+    else if (body == "rod_perpendicular") s.body = FitBody::RodPerpendicular;
+    else throw std::runtime_error(where + ": body '" + body + "' unknown (sphere, rod_parallel, rod_perpendicular)");
+    s.n_spheres = static_cast<int>(number(f[col["n_spheres"]], where));
+    s.d = number(f[col["d"]], where);
+    s.mu = number(f[col["mu"]], where);
+    s.u_mean = number(f[col["u_mean"]], where);
+    s.v = number(f[col["v"]], where);
+    s.force = number(f[col["force"]], where);
+    if (!(s.beta >= 0.0 && s.beta < 1.0) || s.n_spheres < 1 || !(s.d > 0.0) || !(s.mu > 0.0))
+      throw std::runtime_error(where + ": need 0 <= beta < 1, n_spheres >= 1, d > 0, mu > 0");
+    if (s.body == FitBody::Sphere && s.n_spheres != 1)
+      throw std::runtime_error(where + ": a sphere sample has n_spheres 1");
+    out.push_back(s);
+  }
+  if (header.empty()) throw std::runtime_error(origin + ": empty (no header)");
+  return out;
+}
+
+std::vector<ForceSample> read_force_samples(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read force samples '" + path + "'");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_force_samples(ss.str(), path);
+}
+
+LinearFit fit_linear(const std::vector<ForceSample>& samples) {
+  const int n = static_cast<int>(samples.size());
+  Eigen::MatrixXd A(n, 2);
+  Eigen::VectorXd f(n);
+  for (int k = 0; k < n; ++k) {
+    A(k, 0) = samples[k].u_mean;
+    A(k, 1) = -samples[k].v;
+    f(k) = samples[k].force / samples[k].n_spheres;
+  }
+  // scale the columns so that the rank test does not depend on units
+  const Eigen::Vector2d scale(A.col(0).norm(), A.col(1).norm());
+  if (!(scale(0) > 0.0) || !(scale(1) > 0.0))
+    throw std::invalid_argument("fit needs runs with a flow (u_mean != 0) and runs with a moving body (v != 0)");
+  const Eigen::MatrixXd As = A * scale.cwiseInverse().asDiagonal();
+  const auto qr = As.colPivHouseholderQr();
+  if (qr.rank() < 2) throw std::invalid_argument("fit: flow and body velocity vary together; a and b not separable");
+  const Eigen::Vector2d x = qr.solve(f).cwiseQuotient(scale);
+  LinearFit out;
+  out.a = x(0);
+  out.b = x(1);
+  out.n = n;
+  const double fr = f.norm();
+  out.rms_residual = fr > 0.0 ? (A * x - f).norm() / fr : 0.0;
+  return out;
+}
+
+ConfinementTable fit_table(const std::vector<ForceSample>& samples, const std::string& source) {
+  if (samples.empty()) throw std::invalid_argument("fit_table: no samples");
+  const ConfinementTable defaults = ConfinementTable::default_table();
+  std::map<double, std::map<FitBody, std::vector<ForceSample>>> groups;
+  for (const auto& s : samples) groups[s.beta][s.body].push_back(s);
+  if (groups.size() < 2)
+    throw std::invalid_argument("fit_table: runs at two or more beta values are needed (the table interpolates in beta)");
+  std::vector<ConfinementTable::Row> rows;
+  std::set<std::string> fitted;
+  for (auto& [beta, bodies] : groups) {
+    ConfinementCoefficients c = defaults.at(beta);
+    if (bodies.count(FitBody::Sphere)) {
+      const auto& g = bodies[FitBody::Sphere];
+      const LinearFit fit = fit_linear(g);
+      const double zeta0 = 3.0 * kPi * g.front().mu * g.front().d;
+      c.sphere_friction = fit.b / zeta0;
+      c.sphere_driving = fit.a / fit.b;
+      fitted.insert("sphere");
+    }
+    for (FitBody body : {FitBody::RodParallel, FitBody::RodPerpendicular}) {
+      if (!bodies.count(body)) continue;
+      const auto& g = bodies[body];
+      const LinearFit fit = fit_linear(g);
+      const double zeta_sphere = c.sphere_friction * 3.0 * kPi * g.front().mu * g.front().d;
+      if (body == FitBody::RodParallel) {
+        c.parallel_friction = fit.b / zeta_sphere;
+        c.parallel_driving = fit.a / fit.b;
+        fitted.insert("rod_parallel");
+      } else {
+        c.perpendicular_friction = fit.b / zeta_sphere;
+        c.perpendicular_driving = fit.a / fit.b;
+        fitted.insert("rod_perpendicular");
+      }
+    }
+    rows.push_back({beta, c});
+  }
+  std::string which;
+  for (const auto& f : fitted) which += (which.empty() ? "" : " ") + f;
+  return ConfinementTable(rows, source + "; fitted columns: " + which + "; other columns from the defaults");
+}
+
+}  // namespace hsrod::calib

@@ -7,6 +7,7 @@
 #include <liggghts/input.h>
 #include <liggghts/lammps.h>
 #include <liggghts/library_cfd_coupling.h>
+#include <liggghts/modify.h>
 #include <liggghts/update.h>
 #include <liggghts/atom.h>
 
@@ -158,6 +159,12 @@ void DemCoupling::push(const std::vector<DemLoad>& loads, bool contribute, bool 
     data_of_to_liggghts("uf", "vector-atom", lmp, m.uf, "double");
     data_of_to_liggghts("KslRotation", "vector-atom", lmp, m.krot, "double");
   }
+}
+
+int DemCoupling::count_fix_style(const std::string& style) const {
+  std::vector<char> name(style.begin(), style.end());
+  name.push_back('\0');
+  return impl_->lmp->modify->n_fixes_style_strict(name.data());
 }
 
 std::pair<double, double> DemCoupling::density_range() const {

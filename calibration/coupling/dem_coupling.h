@@ -55,6 +55,9 @@ class DemCoupling {
   // Virtual mass: rmass += coeff rho_f pi d^3/6 on every atom [kg]. Call once,
   // before the first run (the DEM then integrates with m_p + m_v).
   void add_virtual_mass(double coeff, double rho_f);
+  // Number of fixes of exactly this style in the DEM input (e.g.
+  // "couple/cfd/force/implicit"), to check the input against the exchange.
+  int count_fix_style(const std::string& style) const;
   // True if the instance has the hsrod package styles.
   static bool has_package_styles();
 

@@ -147,6 +147,32 @@ int main(int argc, char* argv[])
                 << exit(FatalError);
         }
         dem->pull(ib.spheres());
+        // the DEM input must carry the force fix of the chosen exchange
+        {
+            const int nImplicit = dem->count_fix_style("couple/cfd/force/implicit");
+            const int nExplicit = dem->count_fix_style("couple/cfd/force");
+            if (semiImplicit && nImplicit != 1)
+            {
+                FatalIOErrorInFunction(ibDict)
+                    << "exchange semiImplicit needs exactly one"
+                    << " 'fix ... couple/cfd/force/implicit' in " << script
+                    << " (found " << nImplicit << "; explicit couple/cfd/force: " << nExplicit
+                    << "); regenerate the case or set exchange explicit" << exit(FatalIOError);
+            }
+            if (!semiImplicit && nExplicit != 1)
+            {
+                FatalIOErrorInFunction(ibDict)
+                    << "exchange explicit needs exactly one 'fix ... couple/cfd/force' in "
+                    << script << " (found " << nExplicit << ")" << exit(FatalIOError);
+            }
+            if (semiImplicit && dem->count_fix_style("couple/cfd/torque/implicit") != 1)
+            {
+                WarningInFunction
+                    << "no fix couple/cfd/torque/implicit in " << script
+                    << ": the spin response is held over the coupling interval"
+                    << " (explicit; unstable for dt_c > 0.6 tau_p)" << nl;
+            }
+        }
         const auto rhoRange = dem->density_range();
         rhoP = rhoRange.first;
         if (rhoRange.second > 1.001*rhoRange.first)

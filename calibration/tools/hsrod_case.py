@@ -20,9 +20,10 @@ Scene kinds (key "kind"); all quantities in SI units:
                       (topoSet + refineMesh in Allrun).
   sphereInBox         one sphere at the centre of a box with the exact Stokes
                       velocity on all faces (no wall correction), creeping flow.
-  sphereBetweenPlates one sphere midway between no-slip plates z = 0, H moving
-                      at -U relative to the sphere (sphere-fixed frame: plates
-                      and inflow move at +U); the lateral faces far away.
+  sphereBetweenPlates one sphere (or a rigid rod, "rod": {"n", "angle_deg"})
+                      midway between no-slip plates z = 0, H moving at -U
+                      relative to the body (body-fixed frame: plates and
+                      inflow move at +U); the lateral faces far away.
 
 Spheres: "spheres": [{"id":1, "x":[..], "d":.., "v":[..], "omega":[..]}] or a
 rod: "rod": {"n": N, "d": d, "centre": [..], "angle_deg": a} (beads touching,
@@ -561,11 +562,22 @@ def make_sphere_between_plates(scene, case):
     n_d = m.get("cells_per_diameter", 8)
     nz = int(math.ceil(n_d * H / d))
     h = H / nz
-    B = m.get("lateral_half_width", 4.0) * H
-    core = m.get("core_half_width", 0.75) * d
+    # a rigid rod instead of the sphere: "rod": {"n": N, "angle_deg": a}
+    # (centred at the origin, spheres touching); the uniform core and the
+    # lateral faces then extend from the rod's ends
+    if "rod" in scene:
+        spheres = rod_spheres(dict(scene["rod"], d=d, centre=[0.0, 0.0, 0.0]))
+    else:
+        spheres = [{"id": 1, "x": [0, 0, 0], "d": d}]
+    ext = [max(abs(s["x"][k]) for s in spheres) for k in range(2)]
+    core_w = m.get("core_half_width", 0.75) * d
     n_out = m.get("n_outer", 10)
-    ax = Axis.focused(-B, B, -core, core, h, n_out)
-    ay = Axis.focused(-B, B, -core, core, h, n_out)
+    axes = []
+    for k in range(2):
+        core = ext[k] + core_w
+        B = ext[k] + m.get("lateral_half_width", 4.0) * H
+        axes.append(Axis.focused(-B, B, -core, core, h, n_out))
+    ax, ay = axes
     az = Axis.uniform(-0.5 * H, 0.5 * H, nz)
     write_block_mesh(case, ax, ay, az, {"xmin": ("inlet", "patch"), "xmax": ("outlet", "patch"),
                                        "ymin": ("sides", "patch"), "ymax": ("sides", "patch"),
@@ -577,7 +589,7 @@ def make_sphere_between_plates(scene, case):
                                    "p": "        type fixedValue;\n        value uniform 0;\n"}},
                  [U, 0, 0])
     fl = dict(scene["fluid"], creeping=True)
-    write_constant(case, fl, [{"id": 1, "x": [0, 0, 0], "d": d}], scene.get("ib", {}))
+    write_constant(case, fl, spheres, scene.get("ib", {}))
     ctl = dict(scene.get("control", {}), creeping=True)
     write_system(case, ctl, True, has_pref=False)
     write_allrun(case)

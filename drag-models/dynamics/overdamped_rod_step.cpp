@@ -8,6 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <tuple>
 
 namespace hsrod {
 
@@ -70,12 +73,107 @@ OverdampedRod make_overdamped_rod(const RodLayout& layout, const BeamBondMateria
   return rod;
 }
 
+std::vector<std::pair<int, int>> nearby_sphere_pairs(const std::vector<Eigen::Vector3d>& positions, double reach) {
+  std::vector<std::pair<int, int>> pairs;
+  const int n = static_cast<int>(positions.size());
+  if (n < 2 || !(reach > 0.0)) return pairs;
+  // Cells of side `reach` in the plane: a pair within reach in x and y lies
+  // in the same or a neighbouring cell. The gap holds only a few spheres
+  // across z, so cells stay nearly empty and the search is O(n log n).
+  double x_min = std::numeric_limits<double>::infinity(), y_min = x_min;
+  for (const auto& p : positions) {
+    if (!p.allFinite()) continue;
+    x_min = std::min(x_min, p.x());
+    y_min = std::min(y_min, p.y());
+  }
+  struct Cell {
+    std::int64_t cx, cy;
+    int sphere;
+  };
+  const auto cell_order = [](const Cell& a, const Cell& b) {
+    return std::tie(a.cx, a.cy, a.sphere) < std::tie(b.cx, b.cy, b.sphere);
+  };
+  std::vector<Cell> cells;
+  cells.reserve(n);
+  for (int i = 0; i < n; ++i) {
+    // A non-finite sphere has already spoilt the step; it has no neighbours.
+    if (!positions[i].allFinite()) continue;
+    cells.push_back({static_cast<std::int64_t>(std::floor((positions[i].x() - x_min) / reach)),
+                     static_cast<std::int64_t>(std::floor((positions[i].y() - y_min) / reach)), i});
+  }
+  std::sort(cells.begin(), cells.end(), cell_order);
+  for (const Cell& c : cells) {
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const Cell first{c.cx + dx, c.cy + dy, -1};
+        for (auto it = std::lower_bound(cells.begin(), cells.end(), first, cell_order);
+             it != cells.end() && it->cx == first.cx && it->cy == first.cy; ++it) {
+          if (it->sphere <= c.sphere) continue;
+          const Eigen::Vector3d offset = positions[c.sphere] - positions[it->sphere];
+          if (std::fabs(offset.x()) > reach || std::fabs(offset.y()) > reach) continue;
+          pairs.emplace_back(c.sphere, it->sphere);
+        }
+      }
+  }
+  // The order the contacts are summed in is then independent of the cells.
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+struct OverdampedRodSolver::Workspace {
+  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<SphereState> state;
+  Eigen::VectorXd rhs;  // loads [N, N m]
+  Eigen::SparseMatrix<double> matrix;
+  // Spheres are numbered along the rod, so without non-local drag the matrix
+  // is banded (bonds couple neighbouring sections only; a self-contact adds
+  // a block off the band): the natural ordering keeps the LU fill inside
+  // the band, O(n).
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu;
+  std::vector<int> analysed_outer, analysed_inner;  // pattern `lu` was analysed for
+  int analyses = 0;
+
+  // Factorises `matrix`, analysing its pattern only when it changed.
+  void factorize() {
+    const int outer_size = static_cast<int>(matrix.outerSize()) + 1;
+    const int nonzeros = static_cast<int>(matrix.nonZeros());
+    const bool same_pattern =
+        analyses > 0 && static_cast<int>(analysed_outer.size()) == outer_size &&
+        static_cast<int>(analysed_inner.size()) == nonzeros &&
+        std::equal(analysed_outer.begin(), analysed_outer.end(), matrix.outerIndexPtr()) &&
+        std::equal(analysed_inner.begin(), analysed_inner.end(), matrix.innerIndexPtr());
+    if (!same_pattern) {
+      lu.analyzePattern(matrix);
+      analysed_outer.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + outer_size);
+      analysed_inner.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + nonzeros);
+      ++analyses;
+    }
+    lu.factorize(matrix);
+  }
+};
+
+OverdampedRodSolver::OverdampedRodSolver() : workspace_(std::make_unique<Workspace>()) {}
+OverdampedRodSolver::~OverdampedRodSolver() = default;
+OverdampedRodSolver::OverdampedRodSolver(OverdampedRodSolver&&) noexcept = default;
+OverdampedRodSolver& OverdampedRodSolver::operator=(OverdampedRodSolver&&) noexcept = default;
+
+int OverdampedRodSolver::pattern_analyses() const { return workspace_->analyses; }
+
 OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag, double dt,
                                          const ChannelGeometry* geometry, const WallContactParameters* walls) {
+  OverdampedRodSolver solver;
+  return solver.step(rod, drag, dt, geometry, walls);
+}
+
+OverdampedStepResult OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double dt,
+                                               const ChannelGeometry* geometry, const WallContactParameters* walls) {
+  Workspace& w = *workspace_;
   const int n = rod.size();
   const int ndof = 6 * n;
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(ndof);
-  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::VectorXd& rhs = w.rhs;
+  rhs.setZero(ndof);
+  std::vector<Eigen::Triplet<double>>& triplets = w.triplets;
+  triplets.clear();
   triplets.reserve(36 * n + 144 * rod.bonds.size() + 9 * n * (drag.coupled() ? n : 1));
   OverdampedStepResult result;
 
@@ -97,8 +195,11 @@ OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag
     }
   }
 
-  // Bonds: loads at y_n and stiffness K = -d loads / dy.
-  std::vector<SphereState> state(n);
+  // Bonds: loads at y_n and stiffness K = -d loads / dy. Every entry of a
+  // bond's block enters the pattern, also one that happens to be zero at
+  // this configuration, so that the pattern (and its LU analysis) stays put.
+  std::vector<SphereState>& state = w.state;
+  state.resize(n);
   for (int i = 0; i < n; ++i) {
     state[i].position = rod.positions[i];
     state[i].orientation = rod.orientations[i];
@@ -110,8 +211,7 @@ OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag
     const int base[2] = {6 * b.i, 6 * b.j};
     for (int r = 0; r < 12; ++r) {
       rhs[base[r / 6] + r % 6] += loads[r];
-      for (int c = 0; c < 12; ++c)
-        if (jacobian(r, c) != 0.0) triplets.emplace_back(base[r / 6] + r % 6, base[c / 6] + c % 6, -jacobian(r, c));
+      for (int c = 0; c < 12; ++c) triplets.emplace_back(base[r / 6] + r % 6, base[c / 6] + c % 6, -jacobian(r, c));
     }
   }
 
@@ -130,18 +230,17 @@ OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag
 
   // Non-bonded spheres of the rod touching each other (a folding rod).
   if (walls && walls->self_contact && n > 2) {
-    std::vector<std::vector<int>> bonded(n);
-    for (const RodBond& b : rod.bonds) {
-      bonded[b.i].push_back(b.j);
-      bonded[b.j].push_back(b.i);
-    }
     double largest_radius = 0.0;
     for (double r : rod.radii) largest_radius = std::max(largest_radius, r);
-    const double reach = 2.0 * largest_radius;
-    for (int i = 0; i < n; ++i) {
-      for (int j = i + 1; j < n; ++j) {
-        const Eigen::Vector3d offset = rod.positions[i] - rod.positions[j];
-        if (std::fabs(offset.x()) > reach || std::fabs(offset.y()) > reach) continue;
+    const auto candidates = nearby_sphere_pairs(rod.positions, 2.0 * largest_radius);
+    if (!candidates.empty()) {
+      std::vector<std::vector<int>> bonded(n);
+      for (const RodBond& b : rod.bonds) {
+        bonded[b.i].push_back(b.j);
+        bonded[b.j].push_back(b.i);
+      }
+      for (const auto& pair : candidates) {
+        const int i = pair.first, j = pair.second;
         if (std::find(bonded[i].begin(), bonded[i].end(), j) != bonded[i].end()) continue;
         const WallContact c = sphere_contact(*walls, rod.positions[i], rod.radii[i], rod.positions[j], rod.radii[j]);
         if (!c.touching) continue;
@@ -159,18 +258,15 @@ OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag
     }
   }
 
-  Eigen::SparseMatrix<double> matrix(ndof, ndof);
+  Eigen::SparseMatrix<double>& matrix = w.matrix;
+  matrix.resize(ndof, ndof);
   matrix.setFromTriplets(triplets.begin(), triplets.end());
   Eigen::VectorXd dy;
   if (drag.coupled() || n <= 16) {
     dy = Eigen::MatrixXd(matrix).partialPivLu().solve(rhs);
   } else {
-    // Spheres are numbered along the rod, so the matrix is banded (bonds
-    // couple neighbouring sections only, unless the drag is non-local):
-    // the natural ordering keeps the LU fill inside the band, O(n).
-    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu;
-    lu.compute(matrix);
-    dy = lu.solve(rhs);
+    w.factorize();
+    dy = w.lu.solve(rhs);
   }
 
   result.velocities.resize(n);

@@ -24,6 +24,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <memory>
 #include <vector>
 
 namespace hsrod {
@@ -57,10 +58,42 @@ struct OverdampedStepResult {
 // A rod at rest in its layout (identity orientations), bonds from `material`.
 OverdampedRod make_overdamped_rod(const RodLayout& layout, const BeamBondMaterial& material, double sphere_diameter);
 
-// Advances `rod` (positions, orientations) in place by dt [s].
-// `walls` may be null (no wall contact).
+// The step of one rod with its workspace kept between steps: the assembly
+// buffers and the sparse LU's symbolic analysis (elimination tree, supernodes,
+// memory) are built once and reused while the rod's sparsity pattern (bonds,
+// self-contacts) stays the same. Building them from scratch every step is
+// what made a 1000-sphere rod cost ~3x more per sphere than a 100-sphere one.
+// Keep one solver per rod (it is tied to the rod's numbering).
+class OverdampedRodSolver {
+ public:
+  OverdampedRodSolver();
+  ~OverdampedRodSolver();
+  OverdampedRodSolver(OverdampedRodSolver&&) noexcept;
+  OverdampedRodSolver& operator=(OverdampedRodSolver&&) noexcept;
+
+  // Advances `rod` (positions, orientations) in place by dt [s].
+  // `geometry` may be null (no scene walls), `walls` null (no contacts at all).
+  OverdampedStepResult step(OverdampedRod& rod, const RodDrag& drag, double dt, const ChannelGeometry* geometry,
+                            const WallContactParameters* walls);
+
+  // Times the sparse factorisation's pattern was analysed (a test hook: once
+  // for a rod whose pattern does not change).
+  int pattern_analyses() const;
+
+ private:
+  struct Workspace;
+  std::unique_ptr<Workspace> workspace_;
+};
+
+// One step with a fresh workspace (convenient for one-off steps and tests;
+// a time loop should keep an OverdampedRodSolver).
 OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag, double dt,
                                          const ChannelGeometry* geometry, const WallContactParameters* walls);
+
+// Pairs (i < j) of spheres of the rod whose centres are within `reach` [m]
+// of each other in x and in y (a superset of the touching pairs), in
+// lexicographic order, found through a cell list: O(n log n), not O(n^2).
+std::vector<std::pair<int, int>> nearby_sphere_pairs(const std::vector<Eigen::Vector3d>& positions, double reach);
 
 // Bond loads and their 12x12 Jacobian (d loads / d (x_i, phi_i, x_j, phi_j))
 // by central differences; loads ordered (F_i, T_i, F_j, T_j).

@@ -182,7 +182,8 @@ void FixRodImplicit::initial_integrate(int) {
 
     const std::vector<Eigen::Vector3d> before = rod.positions;
     // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
-    const auto result = hsrod::overdamped_rod_step(rod, drag, dt, walls_ ? &drag_->geometry() : nullptr, &walls);
+    const auto result =
+        solvers_by_rod_[entry.first].step(rod, drag, dt, walls_ ? &drag_->geometry() : nullptr, &walls);
     largest = std::max(largest, result.largest_displacement / geometry.sphere_diameter);
     wall_force += result.wall_force;
     if (result.wall_contact) contacts++;

@@ -17,6 +17,8 @@ FixStyle(rod/implicit,FixRodImplicit)
 
 #include "fix.h"
 
+#include "dynamics/overdamped_rod_step.h"
+
 #include <map>
 
 namespace LAMMPS_NS {
@@ -54,6 +56,9 @@ class FixRodImplicit : public Fix {
   int contacts_;                  // last step, number of rods touching a wall
   bool warned_;
   std::map<int, RodContactRecord> contacts_by_rod_;
+  // Per rod (molecule ID): the step's workspace and LU analysis, kept
+  // between steps so a long rod is not re-analysed every step.
+  std::map<int, hsrod::OverdampedRodSolver> solvers_by_rod_;
   bool reported_;                // set-up report printed once, not per run
 };
 

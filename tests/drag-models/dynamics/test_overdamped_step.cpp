@@ -10,8 +10,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 using namespace hsrod;
 
@@ -182,4 +185,66 @@ TEST(OverdampedStep, NonBondedSpheresOfOneRodTouchWithHertz) {
   bonded.external_forces.assign(3, Eigen::Vector3d::Zero());
   const auto r = overdamped_rod_step(bonded, drag, 1e-5, nullptr, &contact);
   EXPECT_FALSE(r.self_contact);
+}
+
+TEST(OverdampedStep, CellListFindsExactlyThePairsOfTheAllPairsSearch) {
+  // A rod folded into a tight zig-zag (many near pairs, also pairs exactly
+  // one reach apart in x) plus a few spheres stacked across the gap: the
+  // cell list must return the same pairs as the O(n^2) search, in order.
+  std::vector<Eigen::Vector3d> positions;
+  const double d = 3e-6;
+  for (int k = 0; k < 300; ++k) {
+    const int lane = (k / 20) % 2 ? 19 - k % 20 : k % 20;
+    positions.emplace_back(lane * 0.9 * d + 1e-7 * std::sin(7.0 * k), (k / 20) * 0.95 * d, 1e-6 * std::cos(3.0 * k));
+  }
+  positions.emplace_back(0.0, 0.0, 0.0);
+  positions.emplace_back(d, 0.0, 2.0 * d);  // exactly one reach away in x
+  const double reach = d;
+  std::vector<std::pair<int, int>> all_pairs;
+  for (int i = 0; i < static_cast<int>(positions.size()); ++i)
+    for (int j = i + 1; j < static_cast<int>(positions.size()); ++j) {
+      const Eigen::Vector3d offset = positions[i] - positions[j];
+      if (std::fabs(offset.x()) <= reach && std::fabs(offset.y()) <= reach) all_pairs.emplace_back(i, j);
+    }
+  const auto cell_pairs = nearby_sphere_pairs(positions, reach);
+  std::printf("zig-zag of %zu spheres: %zu candidate pairs\n", positions.size(), all_pairs.size());
+  EXPECT_GT(all_pairs.size(), positions.size());  // the test has near pairs to find
+  EXPECT_EQ(cell_pairs, all_pairs);
+}
+
+TEST(OverdampedStep, KeptSolverAnalysesThePatternOnceAndMatchesFreshSteps) {
+  // A 40-sphere stiff rod (sparse path) across a uniform stream for 30
+  // steps: the solver kept between steps analyses its LU pattern once and
+  // moves the rod as a fresh solver per step does, to round-off.
+  const double d = 3e-6;
+  RodSpec spec;
+  spec.number_of_sections = 40;
+  spec.sphere_diameter = d;
+  const BeamBondMaterial material{15e6, 0.3, d, 0.0};
+  OverdampedRod kept_rod = make_overdamped_rod(make_rod_layout(spec), material, d);
+  OverdampedRod fresh_rod = kept_rod;
+  const auto model = make_hydrodynamic_model("local", {1e-3, 20e-6, d}, ConfinementTable::default_table());
+  const hsrod_test::UniformStream stream;
+  WallContactParameters contact;
+  contact.youngs_modulus = 15e6;
+  OverdampedRodSolver solver;
+  RodGeometry geometry;
+  geometry.sphere_diameter = d;
+  RodDrag drag;
+  double worst = 0.0;
+  for (int k = 0; k < 30; ++k) {
+    geometry.positions = kept_rod.positions;
+    model->evaluate(geometry, stream, drag);
+    solver.step(kept_rod, drag, 1e-5, nullptr, &contact);
+    geometry.positions = fresh_rod.positions;
+    model->evaluate(geometry, stream, drag);
+    overdamped_rod_step(fresh_rod, drag, 1e-5, nullptr, &contact);
+    for (int i = 0; i < kept_rod.size(); ++i)
+      worst = std::max(worst, (kept_rod.positions[i] - fresh_rod.positions[i]).norm());
+  }
+  const double travelled = kept_rod.positions[0].x();
+  std::printf("kept vs fresh solver: travelled %.3g m, largest difference %.3g m\n", travelled, worst);
+  EXPECT_EQ(solver.pattern_analyses(), 1);
+  EXPECT_GT(travelled, 50.0 * d);  // the rod moved: the comparison means something
+  EXPECT_LT(worst, 1e-12 * travelled);
 }

@@ -29,9 +29,12 @@
 //
 // Cost control ("solved every k steps"): the resistance R_o is recomputed
 // only when a sphere has moved more than `update_distance` since the last
-// solve (or after `update_every` evaluations); the window is re-placed (and
-// re-factorised) only when the rod leaves its inner part. Between updates
-// the driving uses the current background flow with the stored R_o.
+// solve (relative to the rod's centroid when no wall is in the window: the
+// system is then translation invariant), when the rod leaves the inner part
+// of its window, or after `update_every` evaluations; the window is
+// re-placed (and, unless wall-free, re-factorised) only in the second case.
+// Between updates the driving uses the current background flow with the
+// stored R_o.
 #pragma once
 
 #include "flow/brinkman_window.h"
@@ -68,9 +71,13 @@ class TwoWayWindowModel : public LocalDragBase {
   double film_friction() const { return film_friction_; }  // zeta_f [N s/m]
   double free_self_mobility() const { return free_self_mobility_; }  // m_free [m/(N s)]
   double lattice_spacing() const { return spacing_; }                // h [m]
-  // Half-width of the square over which a sphere's force is spread [m]: the
-  // support 2h of the 4-point kernel.
-  double footprint_radius() const { return 2.0 * spacing_; }
+  // Width w of the 4-point kernel [m]: d/4, so that the footprint (support
+  // +-2w) is the sphere's own disc, but never below the cell size h (the
+  // kernel must span several nodes); below 4 cells per diameter the
+  // footprint is therefore wider than the sphere.
+  double kernel_width() const { return std::max(spacing_, 0.25 * parameters_.sphere_diameter); }
+  // Half-width of the square over which a sphere's force is spread [m].
+  double footprint_radius() const { return 2.0 * kernel_width(); }
   // Window margin [m] for a rod of planform extent `rod_extent` [m]:
   // options.margin if set, else max(4 l, extent / 2, 2 d) with l = H / sqrt(12)
   // (the screened near field has decayed to e^-4 at 4 l; the Hele-Shaw dipole

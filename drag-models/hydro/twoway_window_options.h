@@ -5,7 +5,7 @@
 namespace hsrod {
 
 struct TwoWayWindowOptions {
-  double cells_per_diameter = 3.0;  // lattice spacing h = d / cells_per_diameter [-]
+  double cells_per_diameter = 4.0;  // lattice spacing h = d / cells_per_diameter [-] (4: footprint = sphere disc)
   double margin = 0.0;              // window margin around the rod [m]; 0: auto (see margin_for)
   double update_distance = 0.0;     // re-solve after this sphere displacement [m]; 0: d / 2
   int update_every = 0;             // also re-solve after this many evaluations; 0: never by count

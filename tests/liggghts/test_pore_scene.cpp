@@ -88,7 +88,7 @@ TEST(PoreScene, TwoWayLevelPassesThePoreCloseToLevel3) {
   // tests/drag-models/hydro) to level 3's interactions; over the passage
   // (120 d) it may lag level 3 by a fraction of a diameter, not more.
   const double d = 3e-6, duration = 4.4e-3;
-  // window_cells 2, the screening setting (4.5 s instead of 36 s here; it
+  // window_cells 2, the screening setting (2.8 s instead of 23 s here; it
   // moves x by 0.11 d against the default 4 cells per diameter).
   const RodState twoway = run_pore("15e6", 4e-6, duration, 0, nullptr, "twoway window_cells 2");
   const RodState nonlocal = run_pore("15e6", 4e-6, duration, 0, nullptr, "nonlocal");

@@ -151,6 +151,8 @@ void BM_CostPerSphereStep(benchmark::State &state, const std::string model) {
 BENCHMARK_CAPTURE(BM_ImplicitPassage, level1_isotropic, std::string("isotropic"))->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_ImplicitPassage, level2_local, std::string("local"))->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_ImplicitPassage, level3_nonlocal, std::string("nonlocal"))->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_ImplicitPassage, level4_twoway, std::string("twoway"))->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_ImplicitPassage, level4_twoway_cells2, std::string("twoway window_cells 2"))->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_ExplicitPassage, level2_explicit_at_limit, std::string("local"))->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_CostPerSphereStep, level1_isotropic, std::string("isotropic"))->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_CostPerSphereStep, level2_local, std::string("local"))->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -1,4 +1,5 @@
 #include "flow/brinkman_grid_solver.h"
+#include "flow/line_stencils.h"
 
 #include <Eigen/SparseCore>
 #include <Eigen/IterativeLinearSolvers>
@@ -13,9 +14,6 @@
 namespace hsrod {
 namespace {
 
-// A wall closer to a node than this fraction of the cell is moved out to it:
-// keeps the Shortley-Weller weights (~1/theta) bounded.
-constexpr double kMinWallFraction = 1e-3;
 
 enum class Component { kU, kV };
 
@@ -120,22 +118,6 @@ class Stencils {
   const MacGrid& g_;
   const MacMasks& m_;
 };
-
-// Shortley-Weller second difference along one line with neighbours at
-// distances a (minus side) and b (plus side):
-//   u'' = 2/(a+b) [(u_p - u_0)/b - (u_0 - u_m)/a]
-// and the matching three-point first difference (exact for quadratics)
-//   u'  = [(u_p - u_0) a/b + (u_0 - u_m) b/a] / (a+b).
-struct LineWeights {
-  double minus, self, plus;
-};
-LineWeights second_difference(double a, double b) {
-  const double wm = 2.0 / (a * (a + b)), wp = 2.0 / (b * (a + b));
-  return {wm, -(wm + wp), wp};
-}
-LineWeights first_difference(double a, double b) {
-  return {-b / (a * (a + b)), (b - a) / (a * b), a / (b * (a + b))};
-}
 
 // Developed inlet profile of the discrete operator: -u'' + 12 u = 1 along the
 // inlet column with the same wall stencil, scaled to mean 1 over the width.

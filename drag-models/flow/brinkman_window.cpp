@@ -1,4 +1,5 @@
 #include "flow/brinkman_window.h"
+#include "flow/line_stencils.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,23 +8,6 @@
 #include <string>
 
 namespace hsrod {
-namespace {
-
-// As in brinkman_grid_solver.cpp: walls closer than this fraction of a cell
-// are moved out to it, which bounds the Shortley-Weller weights.
-constexpr double kMinWallFraction = 1e-3;
-
-// Shortley-Weller second difference with neighbours at distances a (minus)
-// and b (plus): u'' = 2/(a+b) [(u_p - u_0)/b - (u_0 - u_m)/a].
-struct LineWeights {
-  double minus, self, plus;
-};
-LineWeights second_difference(double a, double b) {
-  const double wm = 2.0 / (a * (a + b)), wp = 2.0 / (b * (a + b));
-  return {wm, -(wm + wp), wp};
-}
-
-}  // namespace
 
 BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLattice& lattice,
                                double viscosity)

@@ -28,7 +28,7 @@ rm -f "$src/main.cpp" "$src"/style_registration.* "$src/style_hsrod.h"   # hsrod
 # that one helper in the scratch copy so the check is about our files.
 sed -i 's/return static_cast< std::ostringstream & >(( std::ostringstream() << std::dec << a ) ).str();/std::ostringstream s; s << std::dec << a; return s.str();/' "$src/utils.h"
 flags="-std=c++17 -c -w -I. -I$root/drag-models -I/usr/include/eigen3 $(pkg-config --cflags ompi-cxx)"
-for f in fix_rod_bonds create_rod compute_rod_shape fix_hele_shaw_drag fix_rod_implicit rod_gather modify input; do
+for f in fix_rod_bonds create_rod compute_rod_shape compute_hele_shaw_probe fix_hele_shaw_drag fix_hele_shaw_field fix_rod_implicit rod_gather modify input; do
   (cd "$src" && g++ $flags "$f.cpp" -o "$work/$f.o")
   echo "compiled in the LIGGGHTS tree: $f.cpp"
 done

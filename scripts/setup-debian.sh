@@ -10,7 +10,7 @@ packages=(
   libeigen3-dev libsuitesparse-dev
   libgtest-dev googletest libbenchmark-dev
   libcli11-dev nlohmann-json3-dev
-  python3-numpy python3-matplotlib
+  python3-numpy python3-matplotlib python3-vtk9
 )
 
 missing=()

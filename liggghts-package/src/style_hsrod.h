@@ -7,5 +7,6 @@
 #include "create_rod.h"
 #include "fix_cfd_torque_implicit.h"
 #include "fix_hele_shaw_drag.h"
+#include "fix_hele_shaw_field.h"
 #include "fix_rod_bonds.h"
 #include "fix_rod_implicit.h"

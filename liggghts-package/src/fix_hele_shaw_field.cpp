@@ -1,0 +1,139 @@
+/* ----------------------------------------------------------------------
+   hsrod - fix hele_shaw/field (see fix_hele_shaw_field.h)
+
+   fix ID group hele_shaw/field DRAG-ID N prefix keyword values ...
+     spacing h        lattice spacing [m] (default: the flow grid's cell, or
+                      min(L, W)/100 for a straight channel)
+     gap_layers n     3-D image with n + 1 layers through the gap, parabolic
+                      profile (default 0: the gap-averaged field at mid-gap)
+     walls yes|no     write <prefix>_walls.vtp once (default yes)
+   Writes <prefix>_<step>.vti at setup and every N steps, and <prefix>.pvd.
+------------------------------------------------------------------------- */
+
+#include "fix_hele_shaw_field.h"
+
+#include "comm.h"
+#include "error.h"
+#include "keyword_parsing.h"
+#include "modify.h"
+#include "update.h"
+
+#include "fix_hele_shaw_drag.h"
+
+#include "flow/flow_field_vtk.h"
+#include "flow/grid_brinkman_flow.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+FixHeleShawField::FixHeleShawField(LAMMPS *lmp, int narg, char **arg)
+    : Fix(lmp, narg, arg),
+      drag_(nullptr),
+      spacing_(0.0),
+      gap_layers_(0),
+      walls_(true),
+      walls_written_(false),
+      last_written_(-1) {
+  const char *style = "fix hele_shaw/field";
+  if (narg < 6)
+    error->all(FLERR, "Illegal fix hele_shaw/field command: expected fix ID group hele_shaw/field drag-ID N prefix");
+  drag_id_ = arg[3];
+  find_drag();
+  nevery = parse_integer(error, style, "N", arg[4]);
+  if (nevery < 1) error->all(FLERR, "fix hele_shaw/field: N (output interval) must be >= 1 step");
+  prefix_ = arg[5];
+  int iarg = 6;
+  while (iarg < narg) {
+    const char *key = arg[iarg];
+    if (iarg + 1 >= narg) {
+      char msg[256];
+      std::snprintf(msg, sizeof(msg), "Illegal fix hele_shaw/field command: keyword %s needs a value", key);
+      error->all(FLERR, msg);
+    }
+    if (strcmp(key, "spacing") == 0) {
+      spacing_ = parse_number(error, style, key, arg[iarg + 1]);
+      if (!(spacing_ > 0.0)) error->all(FLERR, "fix hele_shaw/field: spacing must be > 0 m");
+    } else if (strcmp(key, "gap_layers") == 0) {
+      gap_layers_ = parse_integer(error, style, key, arg[iarg + 1]);
+      if (gap_layers_ < 0 || gap_layers_ > 1000) error->all(FLERR, "fix hele_shaw/field: gap_layers must be in [0, 1000]");
+    } else if (strcmp(key, "walls") == 0) {
+      walls_ = parse_yes_no(error, style, key, arg[iarg + 1]);
+    } else {
+      char msg[256];
+      std::snprintf(msg, sizeof(msg),
+                    "Illegal fix hele_shaw/field command: unknown keyword '%s' (expected spacing, gap_layers, walls)", key);
+      error->all(FLERR, msg);
+    }
+    iarg += 2;
+  }
+  if (spacing_ == 0.0) {
+    const hsrod::BackgroundFlow &flow = drag_->flow();
+    const auto *grid = dynamic_cast<const hsrod::GridBrinkmanFlow *>(&flow);
+    spacing_ = grid ? std::min(grid->cell_size_x(), grid->cell_size_y())
+                    : std::min(flow.geometry().length(), flow.geometry().width()) / 100.0;
+  }
+  // Refuse a lattice that is too large now, not at the first output.
+  try {
+    hsrod::planform_lattice(drag_->flow().geometry(), spacing_, drag_->gap_bottom(), gap_layers_);
+  } catch (const std::exception &e) {
+    char msg[512];
+    std::snprintf(msg, sizeof(msg), "fix hele_shaw/field: %s", e.what());
+    error->all(FLERR, msg);
+  }
+}
+
+int FixHeleShawField::setmask() { return END_OF_STEP; }
+
+void FixHeleShawField::find_drag() {
+  const int f = modify->find_fix(drag_id_.c_str());
+  drag_ = f < 0 ? nullptr : dynamic_cast<FixHeleShawDrag *>(modify->fix[f]);
+  if (!drag_) {
+    char msg[256];
+    std::snprintf(msg, sizeof(msg), "fix hele_shaw/field: '%s' is not the ID of a fix hele_shaw/drag defined before",
+                  drag_id_.c_str());
+    error->all(FLERR, msg);
+  }
+}
+
+void FixHeleShawField::init() { find_drag(); }
+
+void FixHeleShawField::setup(int) { write_frame(); }
+
+void FixHeleShawField::end_of_step() { write_frame(); }
+
+// The background field is the same on every processor: processor 0 samples
+// and writes it.
+void FixHeleShawField::write_frame() {
+  if (last_written_ == update->ntimestep) return;
+  last_written_ = update->ntimestep;
+  if (comm->me != 0) return;
+  const hsrod::BackgroundFlow &flow = drag_->flow();
+  const double time = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  char name[512];
+  std::snprintf(name, sizeof(name), "%s_" BIGINT_FORMAT ".vti", prefix_.c_str(), update->ntimestep);
+  try {
+    if (walls_ && !walls_written_) {
+      hsrod::write_walls_vtp(prefix_ + "_walls.vtp", flow.geometry(), drag_->gap_bottom());
+      walls_written_ = true;
+    }
+    const hsrod::FieldLattice lattice =
+        hsrod::planform_lattice(flow.geometry(), spacing_, drag_->gap_bottom(), gap_layers_);
+    hsrod::write_field_vti(name, lattice, hsrod::sample_field(flow, lattice, drag_->gap_bottom()), time,
+                           static_cast<long>(update->ntimestep));
+    // The collection refers to the frames by name relative to its own directory.
+    std::string file = name;
+    const size_t slash = file.find_last_of('/');
+    if (slash != std::string::npos) file = file.substr(slash + 1);
+    frames_.emplace_back(time, file);
+    hsrod::write_collection_pvd(prefix_ + ".pvd", frames_);
+  } catch (const std::exception &e) {
+    char msg[512];
+    std::snprintf(msg, sizeof(msg), "fix hele_shaw/field: %s", e.what());
+    error->one(FLERR, msg);
+  }
+}

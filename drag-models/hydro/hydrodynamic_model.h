@@ -68,8 +68,7 @@ class HydrodynamicModel {
   virtual std::string work_summary() const { return ""; }
 };
 
-// Model names: "isotropic" (level 1), "local" (level 2), "nonlocal" (level 3),
-// "twoway" (level 4, default window options; hydro/twoway_window_model.h).
+// The model registered under `name` (hydro/model_registry.h lists them).
 // Throws std::invalid_argument for an unknown name or beta outside the table.
 // `window` configures level 4 (hydro/twoway_window_model.h); other levels ignore it.
 std::unique_ptr<HydrodynamicModel> make_hydrodynamic_model(const std::string& name,
@@ -80,7 +79,7 @@ std::unique_ptr<HydrodynamicModel> make_hydrodynamic_model(const std::string& na
                                                            const ConfinementTable& table,
                                                            const TwoWayWindowOptions& window);
 
-// Names accepted by make_hydrodynamic_model, for error messages.
+// Names accepted by make_hydrodynamic_model (the registry's), by level.
 std::vector<std::string> hydrodynamic_model_names();
 
 }  // namespace hsrod

@@ -1,9 +1,11 @@
 /* ----------------------------------------------------------------------
    hsrod - fix hele_shaw/drag: confined hydrodynamic forces on rods in a
    Hele-Shaw channel or pore constriction (the reduced model).
-   Physics in drag-models/ (geometry, flow, hydro); this fix builds the
-   scene from its keywords, gathers each rod, evaluates the selected model
-   and scatters forces and torques. Doc: doc/fix_hele_shaw_drag.txt
+   A thin adapter: it parses its keywords into a scene and a model spec,
+   builds the facade hsrod::RodHydrodynamics (drag-models/hydro/
+   rod_hydrodynamics.h, which owns geometry, background flow, model and
+   `auto` policy), gathers each rod, asks the facade for its loads and
+   scatters forces and torques. Doc: doc/fix_hele_shaw_drag.txt
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -17,17 +19,13 @@ FixStyle(hele_shaw/drag,FixHeleShawDrag)
 
 #include "fix.h"
 
-#include "hydro/twoway_window_options.h"
-
 #include <memory>
-#include <string>
 
 namespace hsrod {
 class BackgroundFlow;
-class ChannelGeometry;
-class HydrodynamicModel;
-struct RodGeometry;
-struct RodDrag;
+class RodHydrodynamics;
+struct SceneSpec;
+struct ModelSpec;
 }  // namespace hsrod
 
 namespace LAMMPS_NS {
@@ -47,29 +45,21 @@ class FixHeleShawDrag : public Fix {
   int pack_exchange(int, double *);
   int unpack_exchange(int, double *);
 
-  // For fix rod/implicit, which applies the drag inside its implicit step.
+  // The scene's hydrodynamics (geometry, background flow, model, per-rod
+  // state); other styles find this fix by ID and use it. The model exists
+  // after this fix's init().
+  hsrod::RodHydrodynamics &hydrodynamics() { return *hydro_; }
+  const hsrod::RodHydrodynamics &hydrodynamics() const { return *hydro_; }
+  const hsrod::BackgroundFlow &flow() const;
+  double explicit_drag_limit() const { return explicit_limit_; }  // 2 m / zeta_max [s], from setup
+
+  // For fix rod/implicit, which applies the drag inside its implicit step:
+  // this fix then adds no force and reports the force stored per atom.
   void set_applied_by_integrator(bool flag) { applied_by_integrator_ = flag; }
-  const hsrod::ChannelGeometry &geometry() const { return *geometry_; }
-  const hsrod::BackgroundFlow &flow() const { return *flow_; }
-  const hsrod::HydrodynamicModel &model() const { return *model_; }
-  double gap_bottom() const { return gap_bottom_; }    // z of the lower gap wall [m]
-  int section_size() const { return section_size_; }
-  double explicit_drag_limit() const { return explicit_limit_; }  // 2 m / zeta_max [s]
-  // Stores the hydrodynamic force on local atom i for output.
-  void store_force(int i, const double *force);
+  void store_force(int i, const double *force);  // hydrodynamic force on local atom i [N]
 
  private:
-  std::unique_ptr<hsrod::ChannelGeometry> geometry_;
-  std::unique_ptr<hsrod::BackgroundFlow> flow_;
-  std::unique_ptr<hsrod::HydrodynamicModel> model_;
-  std::string model_name_;        // as asked ("auto" resolved in init)
-  double viscosity_;              // mu [Pa s]
-  double fluid_density_;          // rho_f [kg/m3]
-  double gap_bottom_;             // z of the lower gap wall [m]
-  double tolerance_;              // auto: accepted relative deflection error [-]
-  std::string coefficients_file_; // "" = built-in defaults
-  hsrod::TwoWayWindowOptions window_;  // level 4 (twoway) window settings
-  int section_size_;              // spheres per rod cross-section
+  std::unique_ptr<hsrod::RodHydrodynamics> hydro_;
   bool applied_by_integrator_;
   double **hydro_force_;          // per atom: last hydrodynamic force [N]
   double total_force_[3];         // on the group [N]
@@ -78,9 +68,11 @@ class FixHeleShawDrag : public Fix {
   double explicit_limit_;         // 2 m / zeta_max [s]
   bool limit_reported_;           // the limit is printed once, not per run
 
-  void build_model(double sphere_diameter);
-  std::string choose_auto_level(double sphere_diameter);
+  // fix_hele_shaw_drag_keywords.cpp: the keywords into the facade's specs.
+  void parse_keywords(int narg, char **arg, hsrod::SceneSpec &scene, hsrod::ModelSpec &model);
+  void choose_model();
   void check_explicit_limit();
+  void report(const char *line);  // to screen and log file on rank 0
 };
 
 }  // namespace LAMMPS_NS

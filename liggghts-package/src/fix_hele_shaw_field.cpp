@@ -22,6 +22,7 @@
 
 #include "flow/flow_field_vtk.h"
 #include "flow/grid_brinkman_flow.h"
+#include "hydro/rod_hydrodynamics.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -79,7 +80,7 @@ FixHeleShawField::FixHeleShawField(LAMMPS *lmp, int narg, char **arg)
   }
   // Refuse a lattice that is too large now, not at the first output.
   try {
-    hsrod::planform_lattice(drag_->flow().geometry(), spacing_, drag_->gap_bottom(), gap_layers_);
+    hsrod::planform_lattice(drag_->flow().geometry(), spacing_, drag_->hydrodynamics().gap_bottom(), gap_layers_);
   } catch (const std::exception &e) {
     char msg[512];
     std::snprintf(msg, sizeof(msg), "fix hele_shaw/field: %s", e.what());
@@ -118,12 +119,12 @@ void FixHeleShawField::write_frame() {
   std::snprintf(name, sizeof(name), "%s_" BIGINT_FORMAT ".vti", prefix_.c_str(), update->ntimestep);
   try {
     if (walls_ && !walls_written_) {
-      hsrod::write_walls_vtp(prefix_ + "_walls.vtp", flow.geometry(), drag_->gap_bottom());
+      hsrod::write_walls_vtp(prefix_ + "_walls.vtp", flow.geometry(), drag_->hydrodynamics().gap_bottom());
       walls_written_ = true;
     }
     const hsrod::FieldLattice lattice =
-        hsrod::planform_lattice(flow.geometry(), spacing_, drag_->gap_bottom(), gap_layers_);
-    hsrod::write_field_vti(name, lattice, hsrod::sample_field(flow, lattice, drag_->gap_bottom()), time,
+        hsrod::planform_lattice(flow.geometry(), spacing_, drag_->hydrodynamics().gap_bottom(), gap_layers_);
+    hsrod::write_field_vti(name, lattice, hsrod::sample_field(flow, lattice, drag_->hydrodynamics().gap_bottom()), time,
                            static_cast<long>(update->ntimestep));
     // The collection refers to the frames by name relative to its own directory.
     std::string file = name;

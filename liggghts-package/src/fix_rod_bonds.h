@@ -6,7 +6,11 @@
    bonded pairs from LIGGGHTS' bond topology, keeps each sphere's
    orientation and each bond's rest state as per-atom data (so they migrate
    with the atoms and survive write_restart/read_restart), and scatters the
-   bond forces and torques. Doc: liggghts-package/doc/fix_rod_bonds.txt
+   bond forces and torques. It hands out the rod's bond set (E, nu, bond
+   thickness -> stiffness, rod/rod_bond_set.h) and, through RodBondRecords,
+   the per-atom orientations and rest states a rod gather needs.
+   Per-atom storage in fix_rod_bonds_storage.cpp.
+   Doc: liggghts-package/doc/fix_rod_bonds.txt
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -20,6 +24,9 @@ FixStyle(rod/bonds,FixRodBonds)
 
 #include "fix.h"
 
+#include "rod_bond_records.h"
+
+#include "rod/rod_bond_set.h"
 #include "rod/stability_limits.h"
 
 #include <Eigen/Geometry>
@@ -28,7 +35,7 @@ FixStyle(rod/bonds,FixRodBonds)
 
 namespace LAMMPS_NS {
 
-class FixRodBonds : public Fix {
+class FixRodBonds : public Fix, public RodBondRecords {
  public:
   FixRodBonds(class LAMMPS *, int, char **);
   ~FixRodBonds();
@@ -59,16 +66,18 @@ class FixRodBonds : public Fix {
   // Explicit stability limit of the rod's bonds [s] (computed in init()).
   double explicit_bond_limit() const { return explicit_limit_; }
 
-  // Access for fix rod/implicit, which integrates the rods itself.
-  // While set, this fix neither moves orientations nor adds bond loads.
+  // The rod's bonds as one material: the one place where E, nu and the
+  // bond thickness become stiffness (rod/rod_bond_set.h).
+  const hsrod::RodBondSet &bond_set() const { return bond_set_; }
+  // RodBondRecords: per local atom i, for rod gathers.
+  Eigen::Quaterniond orientation(int i) const override;
+  std::vector<GatheredBond> rest_states(int i) const override;
+
+  // For fix rod/implicit, which integrates the rods itself. While set, this
+  // fix neither moves orientations nor adds bond loads; the integrator
+  // writes the new orientations back.
   void set_integrated_implicitly(bool flag) { integrated_implicitly_ = flag; }
-  Eigen::Quaterniond orientation(int i) const;
   void set_orientation(int i, const Eigen::Quaterniond &q);
-  // Rest states of the bonds stored on local atom i (partner tag, rest data).
-  std::vector<struct GatheredBond> rest_states(int i);
-  double youngs_modulus() const { return youngs_modulus_; }
-  double poisson_ratio() const { return poisson_ratio_; }
-  double bond_radius_ratio() const { return bond_radius_ratio_; }
 
  private:
   // Rest state of one bond as stored per atom: 8 doubles, see beam_bond.h.
@@ -80,10 +89,7 @@ class FixRodBonds : public Fix {
   static const int record_doubles = sizeof(BondRestRecord) / sizeof(double);
   static const int peratom_doubles = 4 + max_bonds_per_sphere * record_doubles;
 
-  double youngs_modulus_;      // E [Pa]
-  double poisson_ratio_;       // nu [-]
-  double damping_ratio_;       // fraction of critical damping [-]
-  double bond_radius_ratio_;   // bond diameter / smaller sphere diameter [-]
+  hsrod::RodBondSet bond_set_; // E [Pa], nu [-], damping (fraction of critical) [-], bond diameter / sphere diameter [-]
   bool timestep_check_;        // refuse a timestep above the explicit limit
   bool exclude_pairs_;         // keep the rod out of its own pair contacts
 
@@ -100,10 +106,12 @@ class FixRodBonds : public Fix {
   double limits_density_;      // [kg/m3]
 
   BondRestRecord *records(int i) { return reinterpret_cast<BondRestRecord *>(bond_rest_[i]); }
+  const BondRestRecord *records(int i) const { return reinterpret_cast<const BondRestRecord *>(bond_rest_[i]); }
   BondRestRecord *find_or_create_record(int i, int j, int partner_tag);
   void reset_atom(int i);
   void compute_stability_limits();
   void compute_bonds();
+  void parse_keywords(int narg, char **arg);
 };
 
 }  // namespace LAMMPS_NS

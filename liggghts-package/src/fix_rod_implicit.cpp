@@ -15,19 +15,19 @@
 #include "force.h"
 #include "group.h"
 #include "modify.h"
+#include "rod_assembly.h"
 #include "rod_gather.h"
 #include "update.h"
 
 #include "dynamics/overdamped_rod_step.h"
-#include "hydro/hydrodynamic_model.h"
+#include "hydro/rod_hydrodynamics.h"
+#include "rod/rod_bond_set.h"
 
 #include <mpi.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <map>
-#include <set>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -57,12 +57,13 @@ FixRodImplicit::FixRodImplicit(LAMMPS *lmp, int narg, char **arg)
         std::snprintf(msg, sizeof(msg), "fix rod/implicit: %s fix '%s' not found (define it before this fix)", key, val);
         error->all(FLERR, msg);
       }
-      if (key[0] == 'b') bonds_ = dynamic_cast<FixRodBonds *>(modify->fix[f]);
+      const bool is_bonds = strcmp(key, "bonds") == 0;
+      if (is_bonds) bonds_ = dynamic_cast<FixRodBonds *>(modify->fix[f]);
       else drag_ = dynamic_cast<FixHeleShawDrag *>(modify->fix[f]);
-      if ((key[0] == 'b' && !bonds_) || (key[0] == 'd' && !drag_)) {
+      if (is_bonds ? !bonds_ : !drag_) {
         char msg[256];
         std::snprintf(msg, sizeof(msg), "fix rod/implicit: fix '%s' is not a %s fix", val,
-                      key[0] == 'b' ? "rod/bonds" : "hele_shaw/drag");
+                      is_bonds ? "rod/bonds" : "hele_shaw/drag");
         error->all(FLERR, msg);
       }
     } else if (strcmp(key, "walls") == 0) {
@@ -129,61 +130,30 @@ void FixRodImplicit::setup(int) {
 }
 
 void FixRodImplicit::initial_integrate(int) {
+  hsrod::RodHydrodynamics &hydro = drag_->hydrodynamics();
+  const hsrod::RodBondSet &bond_set = bonds_->bond_set();
   RodGather gather(lmp);
   gather.gather(groupbit, bonds_);
   const double dt = update->dt;
   hsrod::WallContactParameters walls;
-  walls.youngs_modulus = bonds_->youngs_modulus();
-  walls.poisson_ratio = bonds_->poisson_ratio();
-  walls.gap_bottom = drag_->gap_bottom();
+  walls.youngs_modulus = bond_set.youngs_modulus;
+  walls.poisson_ratio = bond_set.poisson_ratio;
+  walls.gap_bottom = hydro.gap_bottom();
 
   double largest = 0.0, wall_force = 0.0;
   int contacts = 0;
   for (const auto &entry : gather.rods) {
     const std::vector<GatheredSphere> &spheres = entry.second;
     const int n = static_cast<int>(spheres.size());
-    std::map<int, int> index;
-    for (int k = 0; k < n; k++) index[spheres[k].tag] = k;
-
-    hsrod::OverdampedRod rod;
-    for (const auto &s : spheres) {
-      rod.positions.push_back(s.position);
-      rod.orientations.push_back(s.orientation);
-      rod.radii.push_back(s.radius);
-      rod.external_forces.push_back(s.force);
-      rod.external_torques.push_back(s.torque);
-    }
-    std::set<std::pair<int, int>> seen;
-    for (int k = 0; k < n; k++) {
-      for (const GatheredBond &b : spheres[k].bonds) {
-        auto partner = index.find(b.partner_tag);
-        if (partner == index.end()) continue;  // bonded to another group: not this rod
-        const auto key = std::make_pair(std::min(spheres[k].tag, b.partner_tag), std::max(spheres[k].tag, b.partner_tag));
-        if (!seen.insert(key).second) continue;  // newton_bond off stores bonds twice
-        hsrod::RodBond bond;
-        bond.i = k;
-        bond.j = partner->second;
-        bond.rest.rest_vector_in_frame_i = b.rest_vector;
-        bond.rest.rest_relative_rotation = b.rest_rotation;
-        const double bond_d = 2.0 * bonds_->bond_radius_ratio() * std::min(spheres[k].radius, spheres[bond.j].radius);
-        const hsrod::BeamBondMaterial material{bonds_->youngs_modulus(), bonds_->poisson_ratio(), bond_d, 0.0};
-        bond.stiffness = hsrod::BeamBondStiffness::from_material(material, bond.rest.rest_length());
-        rod.bonds.push_back(bond);
-      }
-    }
-
-    hsrod::RodGeometry geometry;
-    geometry.positions = rod.positions;
-    geometry.sphere_diameter = 2.0 * spheres.front().radius;
-    geometry.spheres_per_section = drag_->section_size();
-    geometry.id = entry.first;
+    hsrod::OverdampedRod rod = overdamped_rod(spheres, bond_set);
+    const hsrod::RodGeometry geometry = rod_geometry(hydro, entry.first, spheres);
     hsrod::RodDrag drag;
-    drag_->model().evaluate(geometry, drag_->flow(), drag);
+    hydro.loads(geometry, drag);
 
     const std::vector<Eigen::Vector3d> before = rod.positions;
     // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
     const auto result =
-        solvers_by_rod_[entry.first].step(rod, drag, dt, walls_ ? &drag_->geometry() : nullptr, &walls);
+        solvers_by_rod_[entry.first].step(rod, drag, dt, walls_ ? &hydro.geometry() : nullptr, &walls);
     largest = std::max(largest, result.largest_displacement / geometry.sphere_diameter);
     wall_force += result.wall_force;
     if (result.wall_contact) contacts++;

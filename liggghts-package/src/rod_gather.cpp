@@ -3,7 +3,6 @@
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
-#include "fix_rod_bonds.h"
 
 #include <mpi.h>
 
@@ -17,7 +16,7 @@ const int kFixed = 2 + 5 * 3 + 2 + 4 + 1;
 const int kPerBond = 1 + 3 + 4;
 }  // namespace
 
-void RodGather::gather(int groupbit, FixRodBonds *bond_fix) {
+void RodGather::gather(int groupbit, const RodBondRecords *bond_fix) {
   rods.clear();
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {

@@ -10,6 +10,7 @@
 #define HSROD_ROD_GATHER_H
 
 #include "pointers.h"
+#include "rod_bond_records.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -22,13 +23,6 @@
 
 namespace LAMMPS_NS {
 
-class FixRodBonds;
-
-struct GatheredBond {
-  int partner_tag;
-  Eigen::Vector3d rest_vector;          // in the owner's body frame [m]
-  Eigen::Quaterniond rest_rotation;     // q_owner^-1 q_partner at rest
-};
 
 struct GatheredSphere {
   int tag = 0, molecule = 0;
@@ -47,9 +41,10 @@ std::vector<T> allgather_all(MPI_Comm world, int nprocs, const std::vector<T> &m
 class RodGather : protected Pointers {
  public:
   explicit RodGather(class LAMMPS *lmp) : Pointers(lmp) {}
-  // Gathers the group's spheres; `bonds` (may be null) adds orientations and
-  // bond rest states. Rods are keyed by molecule ID, spheres sorted by tag.
-  void gather(int groupbit, FixRodBonds *bonds);
+  // Gathers the group's spheres; `bonds` (may be null; fix rod/bonds) adds
+  // orientations and bond rest states. Rods are keyed by molecule ID,
+  // spheres sorted by tag.
+  void gather(int groupbit, const RodBondRecords *bonds);
   std::map<int, std::vector<GatheredSphere>> rods;
 };
 

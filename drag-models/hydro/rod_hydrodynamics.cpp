@@ -1,0 +1,97 @@
+#include "hydro/rod_hydrodynamics.h"
+
+#include "flow/make_background_flow.h"
+#include "geometry/pore_constriction.h"
+#include "hydro/explicit_drag_limit.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace hsrod {
+
+RodHydrodynamics::RodHydrodynamics(const SceneSpec& scene, const ModelSpec& model)
+    : spec_(model), gap_bottom_(scene.origin.z()) {
+  if (spec_.name != "auto" && !find_model(spec_.name))
+    throw std::invalid_argument("unknown model '" + spec_.name + "' (expected " + valid_model_names("auto") + ")");
+  if (spec_.spheres_per_section < 1) throw std::invalid_argument("section must be >= 1");
+  std::vector<ZCylinder> cylinders = scene.cylinders;
+  if (scene.pore_radius >= 0.0) {
+    const ChannelGeometry pore = make_pore_constriction(scene.length, scene.width, scene.gap_height, scene.pore_radius,
+                                                        scene.pore_x, scene.origin.x(), scene.origin.y());
+    for (const auto& c : pore.cylinders()) cylinders.push_back(c);
+  }
+  geometry_ = std::make_unique<ChannelGeometry>(scene.length, scene.width, scene.gap_height, scene.origin.x(),
+                                                scene.origin.y(), cylinders);
+  Inflow inflow = Inflow::mean_velocity(1.0);
+  switch (scene.inflow_kind) {
+    case SceneSpec::InflowKind::mean_velocity: inflow = Inflow::mean_velocity(scene.inflow_value); break;
+    case SceneSpec::InflowKind::flow_rate: inflow = Inflow::flow_rate(scene.inflow_value); break;
+    case SceneSpec::InflowKind::reynolds:
+      inflow = Inflow::mean_velocity(mean_velocity_for_channel_reynolds(scene.inflow_value, *geometry_, scene.fluid));
+      break;
+  }
+  BackgroundFlowOptions options;
+  options.grid.include_inertia = scene.inertia;
+  flow_ = make_background_flow(*geometry_, scene.fluid, inflow, options);
+  viscosity_ = scene.fluid.dynamic_viscosity;
+}
+
+RodHydrodynamics::~RodHydrodynamics() = default;
+
+bool RodHydrodynamics::in_fluid(const Eigen::Vector3d& x) const {
+  return !(geometry_->signed_distance(x[0], x[1]) < 0.0 || x[2] < gap_bottom_ ||
+           x[2] > gap_bottom_ + geometry_->gap_height());
+}
+
+RodGeometry RodHydrodynamics::rod_geometry(int id, std::vector<Eigen::Vector3d> positions,
+                                           double sphere_diameter) const {
+  RodGeometry g;
+  g.positions = std::move(positions);
+  g.spheres_per_section = spec_.spheres_per_section;
+  g.sphere_diameter = sphere_diameter;
+  g.id = id;
+  return g;
+}
+
+const ModelChoiceReport& RodHydrodynamics::choose_model(double d, const std::vector<RodGeometry>& rods,
+                                                        double bending_stiffness) {
+  if (model_) return report_;
+  const double gap = geometry_->gap_height();
+  if (d >= gap) {
+    char msg[256];
+    std::snprintf(msg, sizeof(msg), "sphere diameter %g m >= gap height %g m (beta = d/H must be < 1)", d, gap);
+    throw std::invalid_argument(msg);
+  }
+  const ConfinementTable table = spec_.coefficients_file.empty() ? ConfinementTable::default_table()
+                                                                 : ConfinementTable::read(spec_.coefficients_file);
+  const HydrodynamicParameters parameters{viscosity_, gap, d};
+  ModelChoiceReport report;
+  report.name = spec_.name;
+  if (spec_.name == "auto") {
+    const auto level3 = find_model_level(3)->make(parameters, table, spec_.options);
+    report.automatic = true;
+    report.automatic_choice = choose_auto_model(rods, *flow_, *level3, bending_stiffness, spec_.tolerance);
+    report.name = report.automatic_choice.model;
+  }
+  model_ = make_hydrodynamic_model(report.name, parameters, table, spec_.options.window);
+  report.level = model_->level();
+  report.beta = d / gap;
+  report.coefficients_source = table.source();
+  report_ = report;
+  return report_;
+}
+
+void RodHydrodynamics::loads(const RodGeometry& rod, RodDrag& out) {
+  if (!model_) throw std::logic_error("RodHydrodynamics::loads before choose_model");
+  model_->evaluate(rod, *flow_, out);
+}
+
+double RodHydrodynamics::explicit_drag_limit(const RodGeometry& rod, const std::vector<double>& masses) {
+  RodDrag drag;
+  loads(rod, drag);
+  return hsrod::explicit_drag_limit(rod, drag, masses);
+}
+
+std::string RodHydrodynamics::work_summary() const { return model_ ? model_->work_summary() : ""; }
+
+}  // namespace hsrod

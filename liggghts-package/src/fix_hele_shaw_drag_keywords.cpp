@@ -1,0 +1,158 @@
+/* ----------------------------------------------------------------------
+   hsrod - fix hele_shaw/drag: its keywords (see fix_hele_shaw_drag.h)
+
+   fix ID group hele_shaw/drag keyword values ...
+     channel L W H       channel size [m] (default: the box)
+     origin x0 y0 z0     lower corner: inlet plane, side wall, lower gap wall [m] (default: box lo)
+     pore R x            pore constriction: z-cylinders of radius R on both side walls at x [m]
+     cylinder x y R      any other z-cylinder obstacle [m] (repeatable)
+     viscosity mu        [Pa s] (default 1e-3)
+     fluid_density rho   [kg/m3] (default 1000)
+     mean_velocity U | flow_rate Q | reynolds Re    inflow (one required)
+     model NAME|auto     a registered model (hydro/model_registry.h) or auto (default auto)
+     window_cells c      twoway: grid cells per sphere diameter (default 4)
+     window_margin m     twoway: window margin around the rod [m] (default auto)
+     window_update s     twoway: re-solve after a sphere moved s [m] (default d/2)
+     window_every k      twoway: re-solve at least every k steps (default 0: by distance only)
+     tolerance t         auto: accepted relative deflection error (default 0.01)
+     coefficients file   confinement coefficient table (default: built-in)
+     section S           spheres per rod cross-section (default 1)
+     inertia yes|no      gap-averaged inertia in the background flow (default no)
+     timestep_check yes|no  explicit mode: refuse dt above the drag limit (default yes)
+------------------------------------------------------------------------- */
+
+#include "fix_hele_shaw_drag.h"
+
+#include "domain.h"
+#include "error.h"
+#include "keyword_parsing.h"
+
+#include "hydro/rod_hydrodynamics.h"
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+using namespace LAMMPS_NS;
+
+namespace {
+const char *const kStyle = "fix hele_shaw/drag";
+}
+
+void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &scene, hsrod::ModelSpec &model) {
+  scene.length = domain->boxhi[0] - domain->boxlo[0];
+  scene.width = domain->boxhi[1] - domain->boxlo[1];
+  scene.gap_height = domain->boxhi[2] - domain->boxlo[2];
+  scene.origin = Eigen::Vector3d(domain->boxlo[0], domain->boxlo[1], domain->boxlo[2]);
+  scene.fluid.dynamic_viscosity = 1e-3;
+  scene.fluid.density = 1000.0;
+  bool have_inflow = false;
+
+  int iarg = 3;
+  auto need = [&](int n) {
+    if (iarg + n >= narg) {
+      char msg[256];
+      std::snprintf(msg, sizeof(msg), "Illegal fix hele_shaw/drag command: keyword %s needs %d value(s)", arg[iarg], n);
+      error->all(FLERR, msg);
+    }
+  };
+  auto number = [&](int k) { return parse_number(error, kStyle, arg[iarg], arg[iarg + k]); };
+  auto positive = [&](const char *key, double value, const char *unit) {
+    if (!(value > 0.0)) {
+      char msg[128];
+      std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s must be > 0%s", key, unit);
+      error->all(FLERR, msg);
+    }
+    return value;
+  };
+  while (iarg < narg) {
+    const char *key = arg[iarg];
+    int values = 1;
+    if (strcmp(key, "channel") == 0) {
+      need(values = 3);
+      scene.length = number(1);
+      scene.width = number(2);
+      scene.gap_height = number(3);
+    } else if (strcmp(key, "origin") == 0) {
+      need(values = 3);
+      scene.origin = Eigen::Vector3d(number(1), number(2), number(3));
+    } else if (strcmp(key, "pore") == 0) {
+      need(values = 2);
+      scene.pore_radius = number(1);
+      scene.pore_x = number(2);
+    } else if (strcmp(key, "cylinder") == 0) {
+      need(values = 3);
+      scene.cylinders.push_back({number(1), number(2), number(3)});
+    } else if (strcmp(key, "viscosity") == 0) {
+      need(1);
+      scene.fluid.dynamic_viscosity = positive(key, number(1), " Pa s");
+    } else if (strcmp(key, "fluid_density") == 0) {
+      need(1);
+      scene.fluid.density = positive(key, number(1), " kg/m3");
+    } else if (strcmp(key, "mean_velocity") == 0 || strcmp(key, "flow_rate") == 0 || strcmp(key, "reynolds") == 0) {
+      need(1);
+      if (have_inflow) error->all(FLERR, "fix hele_shaw/drag: give only one of mean_velocity, flow_rate, reynolds");
+      have_inflow = true;
+      using Kind = hsrod::SceneSpec::InflowKind;
+      scene.inflow_kind = strcmp(key, "mean_velocity") == 0 ? Kind::mean_velocity
+                          : strcmp(key, "flow_rate") == 0   ? Kind::flow_rate
+                                                            : Kind::reynolds;
+      scene.inflow_value = positive(key, number(1), "");
+    } else if (strcmp(key, "model") == 0) {
+      need(1);
+      model.name = arg[iarg + 1];
+      if (model.name != "auto" && !hsrod::find_model(model.name)) {
+        char msg[256];
+        std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: unknown model '%s' (expected %s)", model.name.c_str(),
+                      hsrod::valid_model_names("auto").c_str());
+        error->all(FLERR, msg);
+      }
+    } else if (strcmp(key, "window_cells") == 0) {
+      need(1);
+      model.options.window.cells_per_diameter = number(1);
+      const double cells = model.options.window.cells_per_diameter;
+      if (!(cells >= 2.0 && cells <= 16.0))
+        error->all(FLERR, "fix hele_shaw/drag: window_cells must be in [2, 16] cells per sphere diameter");
+    } else if (strcmp(key, "window_margin") == 0) {
+      need(1);
+      model.options.window.margin = positive(key, number(1), " m");
+    } else if (strcmp(key, "window_update") == 0) {
+      need(1);
+      model.options.window.update_distance = positive(key, number(1), " m");
+    } else if (strcmp(key, "window_every") == 0) {
+      need(1);
+      model.options.window.update_every = parse_integer(error, kStyle, key, arg[iarg + 1]);
+      if (model.options.window.update_every < 0)
+        error->all(FLERR, "fix hele_shaw/drag: window_every must be >= 0 steps");
+    } else if (strcmp(key, "tolerance") == 0) {
+      need(1);
+      model.tolerance = number(1);
+      if (!(model.tolerance > 0.0 && model.tolerance < 1.0))
+        error->all(FLERR, "fix hele_shaw/drag: tolerance must be in (0, 1)");
+    } else if (strcmp(key, "coefficients") == 0) {
+      need(1);
+      model.coefficients_file = arg[iarg + 1];
+    } else if (strcmp(key, "section") == 0) {
+      need(1);
+      model.spheres_per_section = parse_integer(error, kStyle, key, arg[iarg + 1]);
+      if (model.spheres_per_section < 1) error->all(FLERR, "fix hele_shaw/drag: section must be >= 1");
+    } else if (strcmp(key, "inertia") == 0) {
+      need(1);
+      scene.inertia = parse_yes_no(error, kStyle, key, arg[iarg + 1]);
+    } else if (strcmp(key, "timestep_check") == 0) {
+      need(1);
+      timestep_check_ = parse_yes_no(error, kStyle, key, arg[iarg + 1]);
+    } else {
+      char msg[512];
+      std::snprintf(msg, sizeof(msg),
+                    "Illegal fix hele_shaw/drag command: unknown keyword '%s' (expected channel, origin, pore, "
+                    "cylinder, viscosity, fluid_density, mean_velocity, flow_rate, reynolds, model, tolerance, "
+                    "coefficients, section, inertia, timestep_check, window_cells, window_margin, window_update, "
+                    "window_every)", key);
+      error->all(FLERR, msg);
+    }
+    iarg += 1 + values;
+  }
+  if (!have_inflow)
+    error->all(FLERR, "Illegal fix hele_shaw/drag command: missing inflow (mean_velocity, flow_rate or reynolds)");
+}

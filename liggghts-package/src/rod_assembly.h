@@ -1,0 +1,33 @@
+/* ----------------------------------------------------------------------
+   hsrod - gathered rods (rod_gather.h) into the structures of drag-models:
+   the one gather-to-geometry function for the hydrodynamics, and the rod
+   of the implicit step with its bonds from the bond set.
+------------------------------------------------------------------------- */
+
+#ifndef HSROD_ROD_ASSEMBLY_H
+#define HSROD_ROD_ASSEMBLY_H
+
+#include "rod_gather.h"
+
+#include "dynamics/overdamped_rod_step.h"
+#include "hydro/rod_hydrodynamics.h"
+#include "rod/rod_bond_set.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+// Rod `molecule` as the hydrodynamic models see it: centres in tag order, the
+// scene's section size, diameter `sphere_diameter` [m] (<= 0: the first sphere's).
+hsrod::RodGeometry rod_geometry(const hsrod::RodHydrodynamics &hydro, int molecule,
+                                const std::vector<GatheredSphere> &spheres, double sphere_diameter = 0.0);
+
+// The rod of the implicit step: positions, orientations, radii, the forces
+// and torques accumulated so far, and one bond per bonded pair of the rod
+// (a bond to a sphere outside the rod is skipped; a bond stored twice with
+// newton_bond off counts once) with its stiffness from `bonds`.
+hsrod::OverdampedRod overdamped_rod(const std::vector<GatheredSphere> &spheres, const hsrod::RodBondSet &bonds);
+
+}  // namespace LAMMPS_NS
+
+#endif

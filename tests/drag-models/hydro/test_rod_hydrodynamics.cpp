@@ -1,0 +1,113 @@
+// The facade RodHydrodynamics without LIGGGHTS: the scene it builds, the
+// explicit drag limit against the closed form 2 m / zeta, and the `auto`
+// policy (hydro/auto_model_choice.h) on rods whose answer is known.
+#include "hydro/rod_hydrodynamics.h"
+
+#include "common/math_constants.h"
+#include "rod_fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace hsrod;
+
+namespace {
+constexpr double kMu = 1e-3, kD = 3e-6, kGap = 20e-6;
+
+SceneSpec straight_channel() {
+  SceneSpec scene;
+  scene.length = 1e-3;
+  scene.width = 200e-6;
+  scene.gap_height = kGap;
+  scene.origin = Eigen::Vector3d(0.0, 0.0, 5e-6);
+  scene.fluid = FluidProperties{kMu, 1000.0};
+  scene.inflow_kind = SceneSpec::InflowKind::mean_velocity;
+  scene.inflow_value = 0.03;
+  return scene;
+}
+
+ModelSpec model_named(const std::string& name) {
+  ModelSpec spec;
+  spec.name = name;
+  return spec;
+}
+
+// Rod of n spheres centred mid-channel at angle theta [rad] to the flow.
+RodGeometry centred_rod(const RodHydrodynamics& hydro, int n, double theta) {
+  RodGeometry rod = hsrod_test::straight_rod(n, kD, theta);
+  for (auto& x : rod.positions) x += Eigen::Vector3d(0.5e-3, 100e-6, 15e-6);
+  return hydro.rod_geometry(1, rod.positions, kD);
+}
+}  // namespace
+
+TEST(RodHydrodynamics, BuildsTheSceneAndKnowsTheFluidRegion) {
+  RodHydrodynamics hydro(straight_channel(), model_named("local"));
+  EXPECT_DOUBLE_EQ(hydro.gap_bottom(), 5e-6);
+  EXPECT_DOUBLE_EQ(hydro.geometry().gap_height(), kGap);
+  EXPECT_NEAR(hydro.flow().mean_velocity(), 0.03, 1e-12);
+  EXPECT_TRUE(hydro.in_fluid(Eigen::Vector3d(0.5e-3, 100e-6, 15e-6)));
+  EXPECT_FALSE(hydro.in_fluid(Eigen::Vector3d(0.5e-3, 100e-6, 4e-6)));   // below the gap
+  EXPECT_FALSE(hydro.in_fluid(Eigen::Vector3d(0.5e-3, 201e-6, 15e-6)));  // beyond the side wall
+  EXPECT_FALSE(hydro.has_model());
+}
+
+TEST(RodHydrodynamics, RefusesUnknownModelsAndSpheresThatDoNotFit) {
+  EXPECT_THROW(RodHydrodynamics(straight_channel(), model_named("slender_body")), std::invalid_argument);
+  RodHydrodynamics hydro(straight_channel(), model_named("isotropic"));
+  EXPECT_THROW(hydro.choose_model(25e-6, {}, 0.0), std::invalid_argument);  // d > H
+  EXPECT_FALSE(hydro.has_model());
+}
+
+// An isolated sphere with level 1: zeta = 3 pi mu d f(beta) (Faxen, mid-plane),
+// rotational friction pi mu d^3; the limit is the smaller of 2 m / zeta and
+// 2 I / (pi mu d^3) with I = m d^2 / 10.
+TEST(RodHydrodynamics, ExplicitDragLimitOfAnIsolatedSphereIsTwoMassesOverFriction) {
+  RodHydrodynamics hydro(straight_channel(), model_named("isotropic"));
+  const auto& report = hydro.choose_model(kD, {}, 0.0);
+  EXPECT_EQ(report.name, "isotropic");
+  EXPECT_EQ(report.level, 1);
+  const double mass = 1170.0 * kPi * kD * kD * kD / 6.0;
+  const RodGeometry sphere = hydro.rod_geometry(7, {Eigen::Vector3d(0.5e-3, 100e-6, 15e-6)}, kD);
+  const double zeta = 3.0 * kPi * kMu * kD * faxen_midplane_friction(kD / kGap);
+  const double translation = 2.0 * mass / zeta;
+  const double rotation = 2.0 * (0.1 * mass * kD * kD) / (kPi * kMu * kD * kD * kD);
+  EXPECT_NEAR(hydro.explicit_drag_limit(sphere, {mass}), std::min(translation, rotation),
+              1e-12 * std::min(translation, rotation));
+}
+
+// auto: no bonds -> level 2 (nothing bends); a rod along a uniform stream has
+// no load across itself (symmetry) -> level 2 whatever its stiffness; a rod
+// across the flow is loaded into a C (level 3's shielding of the middle):
+// level 3 for a soft rod, level 2 for a stiff one, and the estimate scales as 1/EI.
+TEST(RodHydrodynamics, AutoChoosesLevelThreeOnlyWhenTheMissedBendingExceedsTheTolerance) {
+  const double soft = 1e-19, stiff = 1e-16;  // EI [N m^2]: 3 um bonds of E ~ 2.5e4 Pa and ~2.5e7 Pa
+  {
+    RodHydrodynamics hydro(straight_channel(), model_named("auto"));
+    const auto& report = hydro.choose_model(kD, {centred_rod(hydro, 10, 0.5 * kPi)}, 0.0);
+    EXPECT_TRUE(report.automatic);
+    EXPECT_FALSE(report.automatic_choice.flexible);
+    EXPECT_EQ(report.name, "local");
+  }
+  {
+    RodHydrodynamics hydro(straight_channel(), model_named("auto"));
+    const auto& report = hydro.choose_model(kD, {centred_rod(hydro, 10, 0.0)}, soft);
+    EXPECT_LT(report.automatic_choice.estimated_deflection, 1e-9);
+    EXPECT_EQ(report.name, "local");
+  }
+  double soft_estimate = 0.0;
+  {
+    RodHydrodynamics hydro(straight_channel(), model_named("auto"));
+    const auto& report = hydro.choose_model(kD, {centred_rod(hydro, 10, 0.5 * kPi)}, soft);
+    soft_estimate = report.automatic_choice.estimated_deflection;
+    EXPECT_GT(soft_estimate, 0.01);
+    EXPECT_EQ(report.name, "nonlocal");
+    EXPECT_EQ(report.level, 3);
+  }
+  {
+    RodHydrodynamics hydro(straight_channel(), model_named("auto"));
+    const auto& report = hydro.choose_model(kD, {centred_rod(hydro, 10, 0.5 * kPi)}, stiff);
+    EXPECT_NEAR(report.automatic_choice.estimated_deflection / soft_estimate, soft / stiff, 1e-9 * soft / stiff);
+    EXPECT_EQ(report.name, "local");
+  }
+}

@@ -194,7 +194,9 @@ CaseOutcome CaseProcess::outcome() const {
   outcome.measures.assign(setup_.measures.size(), "");
   const std::string log_line = last_error_line(log_path_);
   if (timed_out_) {
-    outcome.error = "timed out after --case-timeout " + std::to_string(setup_.timeout_seconds) + " s";
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "%g", setup_.timeout_seconds);
+    outcome.error = std::string("timed out after --case-timeout ") + limit + " s";
   } else if (WIFSIGNALED(wait_status_)) {
     outcome.error = "killed by signal " + std::to_string(WTERMSIG(wait_status_)) + " (" +
                     strsignal(WTERMSIG(wait_status_)) + ")";

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plots of an hsrod-sweep result CSV (doc: liggghts-package/doc/hsrod_sweep.txt).
 
   plot_sweep.py map SWEEP.csv --x E --y ratio --class outcome [--logx] -o map.png

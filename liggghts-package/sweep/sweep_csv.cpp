@@ -23,6 +23,9 @@ void write_all(int fd, const std::string &text, const std::string &path) {
   const ssize_t written = ::write(fd, text.data(), text.size());
   if (written != static_cast<ssize_t>(text.size()))
     throw file_error(path, std::string("write failed: ") + std::strerror(errno));
+}
+
+void sync_file(int fd, const std::string &path) {
   if (::fsync(fd) != 0) throw file_error(path, std::string("fsync failed: ") + std::strerror(errno));
 }
 
@@ -83,6 +86,7 @@ ResultFile::ResultFile(const std::string &path, const CaseGrid &grid, const std:
   if (fd_ < 0) throw file_error(path, std::string("cannot open: ") + std::strerror(errno));
   if (content.empty()) {
     write_all(fd_, header, path);
+    sync_file(fd_, path);
     return;
   }
   if (content.compare(0, header.size(), header) != 0)
@@ -119,9 +123,14 @@ ResultFile::ResultFile(const std::string &path, const CaseGrid &grid, const std:
 }
 
 ResultFile::~ResultFile() {
-  if (fd_ >= 0) ::close(fd_);
+  if (fd_ >= 0) {
+    ::fsync(fd_);
+    ::close(fd_);
+  }
 }
 
 void ResultFile::append(const std::string &row) { write_all(fd_, row, path_); }
+
+void ResultFile::sync() { sync_file(fd_, path_); }
 
 }  // namespace hsrod::sweep

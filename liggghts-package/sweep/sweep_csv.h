@@ -4,8 +4,12 @@
 // and cpu_s (the case's wall and CPU time in its process, s), rank (the MPI
 // rank that ran it). The last three differ between runs of the same sweep.
 // Rows are in the order cases finished. Each row is appended with one
-// write() of the whole line followed by fsync(), by one process only, so a
-// row is either complete on disk or absent; a sweep that is killed and
+// write() of the whole line, by one process only, so a row is either
+// complete in the file or absent: a killed process loses nothing it wrote
+// (the kernel holds the data). fsync() (durability against a crash of the
+// machine itself) is done by sync() in groups (hsrod-sweep: at most once a
+// second and at the end), because one fsync per row bounds the scheduler
+// at ~100 rows/s on a busy disk. A sweep that is killed and
 // started again reads the file, drops a torn last line, checks the header
 // and that every row's values belong to its case ID, and runs only the
 // cases without a row: every case ends up exactly once.
@@ -43,8 +47,10 @@ class ResultFile {
   ResultFile(const ResultFile &) = delete;
   ResultFile &operator=(const ResultFile &) = delete;
   const std::set<std::size_t> &finished() const { return finished_; }
-  // Appends one row (a full line) atomically and makes it durable.
+  // Appends one row (a full line) with one write().
   void append(const std::string &row);
+  // Makes every appended row durable (fsync).
+  void sync();
 
  private:
   std::string path_;

@@ -111,7 +111,7 @@ void scheduler_loop(const CaseGrid &grid, const CaseSetup &setup, const std::vec
       local = std::make_unique<CaseProcess>(setup, id, case_variables(grid, id));
     }
     if (local) {
-      if (local->wait(poll_ms)) {
+      if (local->wait(active_workers > 0 ? poll_ms : -1)) {  // nobody to serve: just wait for the case
         finished(local->id(), local->outcome());
         local.reset();
       }

@@ -50,6 +50,28 @@ def run(output, ranks, extra, fresh=True):
     return done
 
 
+def descendants(pid):
+    children = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open(f"/proc/{entry}/stat") as f:
+                    ppid = int(f.read().rsplit(")", 1)[1].split()[1])
+            except (OSError, IndexError, ValueError):
+                continue
+            if ppid == pid:
+                children += descendants(int(entry)) + [int(entry)]
+    return children
+
+
+def alive(pid):
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return f.read().rsplit(")", 1)[1].split()[0] != "Z"
+    except OSError:
+        return False
+
+
 def rows(output):
     with open(os.path.join(work, output), newline="") as f:
         return list(csv.DictReader(f))
@@ -115,9 +137,18 @@ elif test == "resume":
             if finished_rows >= N_CASES // 2:
                 break
         time.sleep(0.02)
-    os.killpg(job.pid, signal.SIGKILL)  # the whole job at once, as a batch system does
+    # SIGKILL to every process of the job at once (mpirun, the ranks, the
+    # cases' children), as a batch system ending a job does; mpirun alone
+    # would leave its ranks running for a moment.
+    tree = descendants(job.pid) + [job.pid]
+    for pid in tree:
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
     job.wait()
-    time.sleep(0.5)
+    time.sleep(1.0)
+    check(not any(alive(pid) for pid in tree), f"all {len(tree)} processes of the killed sweep are gone")
     before = rows("killed.csv")
     check(N_CASES // 2 <= len(before) < N_CASES,
           f"killed half way: {len(before)} of {N_CASES} rows on disk when SIGKILL hit")

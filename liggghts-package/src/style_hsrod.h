@@ -10,3 +10,4 @@
 #include "fix_hele_shaw_field.h"
 #include "fix_rod_bonds.h"
 #include "fix_rod_implicit.h"
+#include "fix_rod_outcome.h"

@@ -1,0 +1,48 @@
+/* ----------------------------------------------------------------------
+   hsrod - fix rod/outcome: classifies each rod of the group as passed
+   without wall contact, passed with contact, or clogged (criteria and
+   hysteresis in drag-models/rod/rod_outcome.h), records the time and
+   position of first wall contact, and tells the script when every rod is
+   decided so that a chunked run can stop.
+   Doc: doc/fix_rod_outcome.txt
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+
+FixStyle(rod/outcome,FixRodOutcome)
+
+#else
+
+#ifndef LMP_FIX_ROD_OUTCOME_H
+#define LMP_FIX_ROD_OUTCOME_H
+
+#include "fix.h"
+
+#include "rod/rod_outcome.h"
+
+#include <map>
+
+namespace LAMMPS_NS {
+
+class FixRodOutcome : public Fix {
+ public:
+  FixRodOutcome(class LAMMPS *, int, char **);
+  int setmask();
+  void init();
+  void setup(int);
+  void end_of_step();
+  double compute_vector(int);
+
+ private:
+  void sample();
+  class FixHeleShawDrag *drag_;
+  hsrod::RodOutcomeCriteria criteria_;
+  bool pass_x_given_, averaging_given_, clog_given_;
+  std::map<int, hsrod::RodOutcomeTracker> trackers_;  // per molecule ID, identical on every proc
+  bool all_decided_;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,5 +1,6 @@
 #include "dynamics/wall_contact.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hsrod {
@@ -12,8 +13,27 @@ void add_hertz(WallContact& c, double effective_modulus, double radius, double d
   c.force += (4.0 / 3.0) * effective_modulus * root * delta * n;
   c.stiffness += 2.0 * effective_modulus * root * n * n.transpose();
   c.touching = true;
+  if (c.points < static_cast<int>(c.point.size())) c.point[c.points++] = {n, (4.0 / 3.0) * effective_modulus * root * delta};
+}
+
+Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& a) {
+  Eigen::Matrix3d m;
+  m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+  return m;
 }
 }  // namespace
+
+Matrix6d wall_friction_resistance(const WallContactPoint& contact, double radius, double mu, double slip_velocity,
+                                  const Vector6d& previous_velocity) {
+  if (!(mu > 0.0) || !(contact.normal_force > 0.0)) return Matrix6d::Zero();
+  const Eigen::Vector3d& n = contact.normal;
+  Eigen::Matrix<double, 3, 6> g;
+  g.leftCols<3>() = Eigen::Matrix3d::Identity() - n * n.transpose();
+  g.rightCols<3>() = radius * cross_matrix(n);
+  const double slip = (g * previous_velocity).norm();
+  const double coefficient = mu * contact.normal_force / std::max(slip, slip_velocity);
+  return coefficient * g.transpose() * g;
+}
 
 WallContact sphere_contact(const WallContactParameters& p, const Eigen::Vector3d& xi, double ri,
                            const Eigen::Vector3d& xj, double rj) {

@@ -4,12 +4,15 @@
 // elastic sphere on a rigid wall (Johnson 1985, eq. 4.22),
 //     F = 4/3 E* sqrt(r) delta^(3/2),  E* = E / (1 - nu^2),
 // with its stiffness dF/d delta = 2 E* sqrt(r delta) for implicit steps.
-// Frictionless: tangential wall friction is not modelled.
+// Tangential wall friction: regularised Coulomb (wall_friction below);
+// contacts between spheres of one rod are frictionless.
 #pragma once
 
 #include "geometry/channel_geometry.h"
 
 #include <Eigen/Core>
+
+#include <array>
 
 namespace hsrod {
 
@@ -20,14 +23,48 @@ struct WallContactParameters {
   bool planform_walls = true;   // side walls and obstacles
   bool gap_walls = true;        // the two walls bounding the gap
   bool self_contact = true;     // non-bonded spheres of one rod touch (a folding rod)
+  double friction_coefficient = 0.0;  // Coulomb wall friction mu_fr [-] (paper Table 1: 0.5); 0 = frictionless
+  double slip_velocity = 1e-6;        // v_s of the regularised law [m/s]: below it friction is viscous
   double effective_modulus() const { return youngs_modulus / (1.0 - poisson_ratio * poisson_ratio); }
+};
+
+// One wall touched by a sphere: the unit normal into the fluid and the
+// magnitude of the Hertz normal force.
+struct WallContactPoint {
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // [-]
+  double normal_force = 0.0;                          // [N]
 };
 
 struct WallContact {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();       // on the sphere [N]
   Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();   // -dF/dx [N/m]
   bool touching = false;
+  int points = 0;                                        // walls touched (planform + two gap walls)
+  std::array<WallContactPoint, 3> point;                 // the first `points` are valid
 };
+
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+// Regularised Coulomb friction of a sphere of radius r on a wall, in the form
+// the implicit step needs. The slip velocity of the contact point (at r_c = -r n
+// from the centre) for sphere velocity u = (v, omega) is
+//     v_t = G u,   G = [ (I - n n^T)   r [n]x ]   (3x6),
+// and the law is F_t = -mu F_n v_t / max(|v_t|, v_s): Coulomb sliding above the
+// slip velocity v_s, a viscous stick (coefficient mu F_n / v_s) below it, so a
+// sphere under a tangential load T < mu F_n creeps at T v_s / (mu F_n) < v_s.
+// Force and torque on the sphere are G^T F_t. The step linearises it about
+// the previous velocity u0 by its secant (lagged coefficient):
+//     loads = -c G^T G u,   c = mu F_n / max(|G u0|, v_s)   [N s/m],
+// exact at u = u0 and for every u while |v_t| < v_s; c G^T G (symmetric,
+// positive semi-definite) enters the step's matrix as c G^T G / dt. Unlike a
+// Newton tangent, whose slope along the slip direction vanishes and lets the
+// velocity overshoot through zero (stick-slip chatter), the secant law only
+// dissipates, so the implicit step stays stable at any dt.
+// Returns the 6x6 resistance c G^T G [N s/m, N s, N m s] (zero when mu or
+// F_n is zero).
+Matrix6d wall_friction_resistance(const WallContactPoint& contact, double radius, double friction_coefficient,
+                                  double slip_velocity, const Vector6d& previous_velocity);
 
 // Hertz contact between two spheres of one rod (E* = E / (2 (1 - nu^2)),
 // R* = r_i r_j / (r_i + r_j)): the force on sphere i (on j: minus it) and the

@@ -2,6 +2,7 @@
 // included with FIX_CLASS / COMPUTE_CLASS / COMMAND_CLASS defined it yields
 // the FixStyle(...) lines, otherwise the class declarations. Add new style
 // headers here.
+#include "compute_hele_shaw_pressure_drop.h"
 #include "compute_hele_shaw_probe.h"
 #include "compute_rod_shape.h"
 #include "create_rod.h"

@@ -7,7 +7,8 @@
      gap_layers n     3-D image with n + 1 layers through the gap, parabolic
                       profile (default 0: the gap-averaged field at mid-gap)
      walls yes|no     write <prefix>_walls.vtp once (default yes)
-   Writes <prefix>_<step>.vti at setup and every N steps, and <prefix>.pvd.
+   Writes <prefix>_<step>.vti at the start of the first run and every N
+   steps, and <prefix>.pvd.
 ------------------------------------------------------------------------- */
 
 #include "fix_hele_shaw_field.h"
@@ -103,7 +104,11 @@ void FixHeleShawField::find_drag() {
 
 void FixHeleShawField::init() { find_drag(); }
 
-void FixHeleShawField::setup(int) { write_frame(); }
+// The first run writes its initial frame; later runs (a script running in
+// chunks) continue the series every N steps without a frame per chunk.
+void FixHeleShawField::setup(int) {
+  if (frames_.empty() && last_written_ < 0) write_frame();
+}
 
 void FixHeleShawField::end_of_step() { write_frame(); }
 

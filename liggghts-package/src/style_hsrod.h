@@ -4,6 +4,7 @@
 // headers here.
 #include "compute_hele_shaw_pressure_drop.h"
 #include "compute_hele_shaw_probe.h"
+#include "compute_hele_shaw_rod_load.h"
 #include "compute_rod_shape.h"
 #include "create_rod.h"
 #include "fix_cfd_torque_implicit.h"

@@ -59,11 +59,11 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *lmp, int narg, char **arg)
   extlist = new int[4]{1, 1, 1, 0};
   global_freq = 1;
   peratom_flag = 1;
-  size_peratom_cols = 3;
+  size_peratom_cols = N_LOAD_COLUMNS;  // total, driving, friction force; torque
   peratom_freq = 1;
   grow_arrays(atom->nmax);
   atom->add_callback(0);
-  for (int i = 0; i < atom->nlocal; i++) hydro_force_[i][0] = hydro_force_[i][1] = hydro_force_[i][2] = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) std::fill(hydro_force_[i], hydro_force_[i] + N_LOAD_COLUMNS, 0.0);
   total_force_[0] = total_force_[1] = total_force_[2] = 0.0;
 }
 
@@ -213,19 +213,26 @@ void FixHeleShawDrag::post_force(int) {
       const int i = atom->map(rod.second[k].tag);
       if (i < 0 || i >= atom->nlocal) continue;
       const Eigen::Vector3d torque = drag.driving_torque[k] - drag.rotational_resistance[k] * rod.second[k].angular_velocity;
+      const Eigen::Vector3d force = forces.segment<3>(3 * k);
       for (int a = 0; a < 3; a++) {
-        atom->f[i][a] += forces[3 * k + a];
+        atom->f[i][a] += force[a];
         atom->torque[i][a] += torque[a];
-        hydro_force_[i][a] = forces[3 * k + a];
-        total[a] += forces[3 * k + a];
+        total[a] += force[a];
       }
+      store_loads(i, drag.driving_force[k], force, torque);
     }
   }
   MPI_Allreduce(total, total_force_, 3, MPI_DOUBLE, MPI_SUM, world);
 }
 
-void FixHeleShawDrag::store_force(int i, const double *force) {
-  for (int a = 0; a < 3; a++) hydro_force_[i][a] = force[a];
+void FixHeleShawDrag::store_loads(int i, const Eigen::Vector3d &driving, const Eigen::Vector3d &total,
+                                  const Eigen::Vector3d &torque) {
+  for (int a = 0; a < 3; a++) {
+    hydro_force_[i][TOTAL_X + a] = total[a];
+    hydro_force_[i][DRIVING_X + a] = driving[a];
+    hydro_force_[i][FRICTION_X + a] = total[a] - driving[a];
+    hydro_force_[i][TORQUE_X + a] = torque[a];
+  }
 }
 
 double FixHeleShawDrag::compute_vector(int n) {
@@ -241,23 +248,23 @@ double FixHeleShawDrag::compute_vector(int n) {
   return total_force_[n];
 }
 
-double FixHeleShawDrag::memory_usage() { return 3.0 * atom->nmax * sizeof(double); }
+double FixHeleShawDrag::memory_usage() { return double(N_LOAD_COLUMNS) * atom->nmax * sizeof(double); }
 
 void FixHeleShawDrag::grow_arrays(int nmax) {
-  memory->grow(hydro_force_, nmax, 3, "hele_shaw/drag:hydro_force");
+  memory->grow(hydro_force_, nmax, N_LOAD_COLUMNS, "hele_shaw/drag:hydro_force");
   array_atom = hydro_force_;
 }
 
 void FixHeleShawDrag::copy_arrays(int i, int j, int) {
-  for (int a = 0; a < 3; a++) hydro_force_[j][a] = hydro_force_[i][a];
+  for (int c = 0; c < N_LOAD_COLUMNS; c++) hydro_force_[j][c] = hydro_force_[i][c];
 }
 
 int FixHeleShawDrag::pack_exchange(int i, double *buf) {
-  for (int a = 0; a < 3; a++) buf[a] = hydro_force_[i][a];
-  return 3;
+  for (int c = 0; c < N_LOAD_COLUMNS; c++) buf[c] = hydro_force_[i][c];
+  return N_LOAD_COLUMNS;
 }
 
 int FixHeleShawDrag::unpack_exchange(int nlocal, double *buf) {
-  for (int a = 0; a < 3; a++) hydro_force_[nlocal][a] = buf[a];
-  return 3;
+  for (int c = 0; c < N_LOAD_COLUMNS; c++) hydro_force_[nlocal][c] = buf[c];
+  return N_LOAD_COLUMNS;
 }

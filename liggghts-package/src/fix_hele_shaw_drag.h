@@ -19,6 +19,8 @@ FixStyle(hele_shaw/drag,FixHeleShawDrag)
 
 #include "fix.h"
 
+#include <Eigen/Core>
+
 #include <memory>
 
 namespace hsrod {
@@ -56,12 +58,17 @@ class FixHeleShawDrag : public Fix {
   // For fix rod/implicit, which applies the drag inside its implicit step:
   // this fix then adds no force and reports the force stored per atom.
   void set_applied_by_integrator(bool flag) { applied_by_integrator_ = flag; }
-  void store_force(int i, const double *force);  // hydrodynamic force on local atom i [N]
+  // Stores the load on local atom i for output: driving force and total
+  // hydrodynamic force [N] (friction = total - driving = -(R v)), torque [N m].
+  void store_loads(int i, const Eigen::Vector3d &driving, const Eigen::Vector3d &total, const Eigen::Vector3d &torque);
+
+  // Columns of the per-atom array (0-based; f_ID[c+1] in scripts).
+  enum LoadColumn { TOTAL_X = 0, DRIVING_X = 3, FRICTION_X = 6, TORQUE_X = 9, N_LOAD_COLUMNS = 12 };
 
  private:
   std::unique_ptr<hsrod::RodHydrodynamics> hydro_;
   bool applied_by_integrator_;
-  double **hydro_force_;          // per atom: last hydrodynamic force [N]
+  double **hydro_force_;          // per atom, last load: total, driving, friction [N], torque [N m] (LoadColumn)
   double total_force_[3];         // on the group [N]
   int force_flag_;
   bool timestep_check_;           // explicit mode: refuse dt above the drag limit

@@ -173,7 +173,10 @@ void FixRodImplicit::initial_integrate(int) {
         atom->omega[i][a] = result.angular_velocities[k][a];
       }
       bonds_->set_orientation(i, rod.orientations[k]);
-      drag_->store_force(i, result.hydrodynamic_forces[k].data());
+      // The load at the step's new velocities: F = d - R v, T = t - r omega.
+      const Eigen::Vector3d torque =
+          drag.driving_torque[k] - drag.rotational_resistance[k] * result.angular_velocities[k];
+      drag_->store_loads(i, drag.driving_force[k], result.hydrodynamic_forces[k], torque);
     }
   }
   largest_displacement_ = largest;

@@ -131,6 +131,8 @@ struct OverdampedRodSolver::Workspace {
   // the band, O(n).
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu;
   std::vector<int> analysed_outer, analysed_inner;  // pattern `lu` was analysed for
+  std::vector<Vector6d> previous_velocities;
+  std::vector<std::pair<int, Matrix6d>> frictions;  // this step's friction resistance per rubbing sphere  // (v, omega) of the last step, where wall friction is linearised
   int analyses = 0;
 
   // Factorises `matrix`, analysing its pattern only when it changed.
@@ -176,6 +178,8 @@ OverdampedStepResult OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag
   triplets.clear();
   triplets.reserve(36 * n + 144 * rod.bonds.size() + 9 * n * (drag.coupled() ? n : 1));
   OverdampedStepResult result;
+  if (static_cast<int>(w.previous_velocities.size()) != n) w.previous_velocities.assign(n, Vector6d::Zero());
+  w.frictions.clear();
 
   // Hydrodynamic resistance / dt and driving.
   for (int i = 0; i < n; ++i) {
@@ -225,6 +229,23 @@ OverdampedStepResult OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag
       rhs.segment<3>(6 * i) += c.force;
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b) triplets.emplace_back(6 * i + a, 6 * i + b, c.stiffness(a, b));
+      // Wall friction: secant resistance about the previous velocities,
+      // c G^T G / dt on the sphere's 6x6 block (dynamics/wall_contact.h).
+      if (walls->friction_coefficient > 0.0) {
+        Vector6d u0 = w.previous_velocities[i];
+        if (static_cast<int>(rod.velocities.size()) == n) {
+          u0.head<3>() = rod.velocities[i];
+          u0.tail<3>() = static_cast<int>(rod.angular_velocities.size()) == n ? rod.angular_velocities[i]
+                                                                               : Eigen::Vector3d::Zero();
+        }
+        Matrix6d friction = Matrix6d::Zero();
+        for (int k = 0; k < c.points; ++k)
+          friction += wall_friction_resistance(c.point[k], rod.radii[i], walls->friction_coefficient,
+                                               walls->slip_velocity, u0);
+        w.frictions.emplace_back(i, friction);
+        for (int a = 0; a < 6; ++a)
+          for (int b = 0; b < 6; ++b) triplets.emplace_back(6 * i + a, 6 * i + b, friction(a, b) / dt);
+      }
     }
   }
 
@@ -281,7 +302,10 @@ OverdampedStepResult OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag
     result.angular_velocities[i] = dphi / dt;
     translational.segment<3>(3 * i) = result.velocities[i];
     result.largest_displacement = std::max(result.largest_displacement, dx.norm());
+    w.previous_velocities[i] << result.velocities[i], result.angular_velocities[i];
   }
+  for (const auto& rubbing : w.frictions)
+    result.friction_force += (rubbing.second * w.previous_velocities[rubbing.first]).head<3>().norm();
   const Eigen::VectorXd f = drag.forces(translational);
   result.hydrodynamic_forces.resize(n);
   for (int i = 0; i < n; ++i) result.hydrodynamic_forces[i] = f.segment<3>(3 * i);

@@ -9,7 +9,9 @@
 //     (R / dt + K) dy = F_hyd(v = 0) + F_bonds(y_n) + F_walls(y_n) + F_ext,
 // with R the hydrodynamic resistance (hydro/hydrodynamic_model.h), K the
 // stiffness of the bonds and the wall contacts at y_n (bond Jacobian by
-// central differences of the bond law, wall contacts analytic). This is one
+// central differences of the bond law, wall contacts analytic); with wall
+// friction also its secant resistance C about the previous velocities
+// (R/dt + K + C/dt; dynamics/wall_contact.h). This is one
 // Newton step of backward Euler: stable for any dt on the linear(ised)
 // springs, so the step is set by accuracy, not by the 1e-9 s explicit limit.
 // Bond dashpots are negligible next to the fluid friction here and are not
@@ -42,6 +44,10 @@ struct OverdampedRod {
   std::vector<RodBond> bonds;
   std::vector<Eigen::Vector3d> external_forces;   // other forces on the spheres (pairs, fixes) [N]
   std::vector<Eigen::Vector3d> external_torques;  // [N m]
+  // Velocities of the previous step [m/s], [rad/s], about which wall friction
+  // is linearised (dynamics/wall_contact.h). Empty: the solver's own last
+  // step (rest before its first).
+  std::vector<Eigen::Vector3d> velocities, angular_velocities;
   int size() const { return static_cast<int>(positions.size()); }
 };
 
@@ -53,6 +59,7 @@ struct OverdampedStepResult {
   bool wall_contact = false;
   bool self_contact = false;                      // non-bonded spheres of the rod touched
   double wall_force = 0.0;                        // sum of |contact force| [N]
+  double friction_force = 0.0;                    // sum of |wall friction force| at the new velocities [N]
 };
 
 // A rod at rest in its layout (identity orientations), bonds from `material`.

@@ -12,6 +12,7 @@
 #include "error.h"
 #include "fix_hele_shaw_drag.h"
 #include "fix_rod_bonds.h"
+#include "keyword_parsing.h"
 #include "force.h"
 #include "group.h"
 #include "modify.h"
@@ -37,6 +38,8 @@ FixRodImplicit::FixRodImplicit(LAMMPS *lmp, int narg, char **arg)
       bonds_(nullptr),
       drag_(nullptr),
       walls_(true),
+      wall_friction_(0.0),
+      slip_velocity_(1e-6),
       max_displacement_(0.1),
       largest_displacement_(0.0),
       wall_force_(0.0),
@@ -69,6 +72,12 @@ FixRodImplicit::FixRodImplicit(LAMMPS *lmp, int narg, char **arg)
     } else if (strcmp(key, "walls") == 0) {
       if (strcmp(val, "yes") != 0 && strcmp(val, "no") != 0) error->all(FLERR, "fix rod/implicit: walls expects yes or no");
       walls_ = strcmp(val, "yes") == 0;
+    } else if (strcmp(key, "wall_friction") == 0) {
+      wall_friction_ = parse_number(error, "fix rod/implicit", key, val);
+      if (!(wall_friction_ >= 0.0)) error->all(FLERR, "fix rod/implicit: wall_friction must be >= 0 (Coulomb coefficient)");
+    } else if (strcmp(key, "slip_velocity") == 0) {
+      slip_velocity_ = parse_number(error, "fix rod/implicit", key, val);
+      if (!(slip_velocity_ > 0.0)) error->all(FLERR, "fix rod/implicit: slip_velocity must be > 0 m/s");
     } else if (strcmp(key, "max_displacement") == 0) {
       max_displacement_ = std::atof(val);
       if (!(max_displacement_ > 0.0)) error->all(FLERR, "fix rod/implicit: max_displacement must be > 0 (fraction of d)");
@@ -76,7 +85,7 @@ FixRodImplicit::FixRodImplicit(LAMMPS *lmp, int narg, char **arg)
       char msg[256];
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix rod/implicit command: unknown keyword '%s' (expected bonds, drag, walls, "
-                    "max_displacement)", key);
+                    "wall_friction, slip_velocity, max_displacement)", key);
       error->all(FLERR, msg);
     }
   }
@@ -139,6 +148,8 @@ void FixRodImplicit::initial_integrate(int) {
   walls.youngs_modulus = bond_set.youngs_modulus;
   walls.poisson_ratio = bond_set.poisson_ratio;
   walls.gap_bottom = hydro.gap_bottom();
+  walls.friction_coefficient = wall_friction_;
+  walls.slip_velocity = slip_velocity_;
 
   double largest = 0.0, wall_force = 0.0;
   int contacts = 0;
@@ -146,6 +157,12 @@ void FixRodImplicit::initial_integrate(int) {
     const std::vector<GatheredSphere> &spheres = entry.second;
     const int n = static_cast<int>(spheres.size());
     hsrod::OverdampedRod rod = overdamped_rod(spheres, bond_set);
+    // Wall friction is linearised about the velocities of the last step
+    // (this fix set them: v = dx/dt).
+    for (const auto &sphere : spheres) {
+      rod.velocities.push_back(sphere.velocity);
+      rod.angular_velocities.push_back(sphere.angular_velocity);
+    }
     const hsrod::RodGeometry geometry = rod_geometry(hydro, entry.first, spheres);
     hsrod::RodDrag drag;
     hydro.loads(geometry, drag);

@@ -50,6 +50,8 @@ class FixRodImplicit : public Fix {
   class FixRodBonds *bonds_;
   class FixHeleShawDrag *drag_;
   bool walls_;                    // contacts with the scene's walls
+  double wall_friction_;          // Coulomb wall friction coefficient mu_fr [-] (0: frictionless)
+  double slip_velocity_;          // regularisation: below it friction is viscous [m/s]
   double max_displacement_;       // accuracy warning threshold, fraction of d per step [-]
   double largest_displacement_;   // last step, max |dx| / d [-]
   double wall_force_;             // last step, sum of wall contact forces [N]

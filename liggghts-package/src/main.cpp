@@ -7,6 +7,7 @@
 #include "lammps.h"
 #include "signal_handling.h"
 
+#include "screen/screen_mode.h"
 #include "style_registration.h"
 
 #include <mpi.h>
@@ -14,6 +15,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <string>
 
 using namespace LAMMPS_NS;
 
@@ -31,7 +33,15 @@ int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
   LAMMPS *lammps = new LAMMPS(argc, argv, MPI_COMM_WORLD);
   hsrod::register_styles(lammps);
+  // -var hsrod_screen FILE: screen a resolved CFD-DEM script (screen/screen_mode.h).
+  const std::string screen_scene = hsrod::screen::requested_scene(argc, argv);
+  if (!screen_scene.empty() && !hsrod::screen::begin(lammps, screen_scene)) {
+    delete lammps;
+    MPI_Finalize();
+    return 1;
+  }
   lammps->input->file();
+  if (!screen_scene.empty()) hsrod::screen::report(lammps);
   delete lammps;
   MPI_Finalize();
   return 0;

@@ -102,4 +102,9 @@ void register_styles(LAMMPS_NS::LAMMPS *lmp) {
 #undef COMMAND_CLASS
 }
 
+void register_fix_style(LAMMPS_NS::LAMMPS *lmp, const char *style, FixCreator creator) {
+  FixMap &fixes = *(lmp->modify->*get(FixMapTag{}));
+  fixes[style] = creator;
+}
+
 }  // namespace hsrod

@@ -3,6 +3,7 @@
 
 namespace LAMMPS_NS {
 class LAMMPS;
+class Fix;
 }
 
 namespace hsrod {
@@ -10,4 +11,9 @@ namespace hsrod {
 // compute and command maps. Call after `new LAMMPS(...)`, before reading
 // the input.
 void register_styles(LAMMPS_NS::LAMMPS *lmp);
+
+// Registers (or replaces: LIGGGHTS' own styles too) one fix style; used by
+// the screening mode (screen/screen_mode.h) for its stand-ins.
+using FixCreator = LAMMPS_NS::Fix *(*)(LAMMPS_NS::LAMMPS *, int, char **);
+void register_fix_style(LAMMPS_NS::LAMMPS *lmp, const char *style, FixCreator creator);
 }  // namespace hsrod

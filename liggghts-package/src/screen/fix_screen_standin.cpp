@@ -34,14 +34,14 @@ std::string replaced_line(int narg, char **arg, const char *what) {
 
 }  // namespace
 
-FixScreenInert::FixScreenInert(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) {
+FixScreenInert::FixScreenInert(LAMMPS *lammps, int narg, char **arg) : Fix(lammps, narg, arg) {
   const bool integrator = narg > 2 && std::strcmp(arg[2], "nve/sphere") == 0;
   screen_state(lmp, error).replaced.push_back(
       replaced_line(narg, arg, integrator ? "not applied (fix rod/implicit integrates the rods)"
                                           : "not applied (the reduced model's drag replaces the CFD exchange)"));
 }
 
-FixScreenWall::FixScreenWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) {
+FixScreenWall::FixScreenWall(LAMMPS *lammps, int narg, char **arg) : Fix(lammps, narg, arg) {
   ScreenState &state = screen_state(lmp, error);
   int i = 3;
   while (i < narg && std::strcmp(arg[i], "primitive") != 0) ++i;
@@ -69,7 +69,7 @@ FixScreenWall::FixScreenWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg,
   state.replaced.push_back(replaced_line(narg, arg, "recorded as a scene wall (implicit contact in fix rod/implicit)"));
 }
 
-FixScreenCoupling::FixScreenCoupling(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) {
+FixScreenCoupling::FixScreenCoupling(LAMMPS *lammps, int narg, char **arg) : Fix(lammps, narg, arg) {
   ScreenState &state = screen_state(lmp, error);
   for (int i = 3; i + 1 < narg; ++i)
     if (std::strcmp(arg[i], "couple_every") == 0) state.couple_every = std::atoi(arg[i + 1]);

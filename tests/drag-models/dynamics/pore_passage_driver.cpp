@@ -1,0 +1,73 @@
+#include "pore_passage_driver.h"
+
+#include "dynamics/overdamped_rod_step.h"
+#include "flow/inflow.h"
+#include "flow/make_background_flow.h"
+#include "geometry/pore_constriction.h"
+#include "hydro/hydrodynamic_model.h"
+#include "rod/rod_layout.h"
+#include "rod/rod_measures.h"
+
+#include <cmath>
+
+namespace hsrod_test {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kLength = 600e-6, kWidth = 200e-6, kGap = 20e-6;  // [m]
+constexpr double kPoreRadius = 85e-6, kPoreX = 300e-6;             // [m]
+constexpr double kD = 3e-6;                                        // [m]
+
+PassageSample sample(int step, const hsrod::OverdampedRod& rod) {
+  PassageSample s;
+  s.step = step;
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();
+  for (const auto& p : rod.positions) com += p / rod.size();
+  s.x_centre = com.x();
+  s.lateral = (com.y() - 0.5 * kWidth) / kWidth;
+  s.angle_deg = hsrod::rod_angle_eq1(rod.positions.front().head<2>(), rod.positions.back().head<2>()) * 180.0 / kPi;
+  return s;
+}
+}  // namespace
+
+std::vector<PassageSample> run_pore_passage(const PassageCase& c, const std::string& cache_dir) {
+  const hsrod::ChannelGeometry geometry = hsrod::make_pore_constriction(kLength, kWidth, kGap, kPoreRadius, kPoreX);
+  const hsrod::FluidProperties fluid{1e-3, 1170.0};
+  const auto inflow = hsrod::Inflow::mean_velocity(hsrod::mean_velocity_for_channel_reynolds(2.0, geometry, fluid));
+  hsrod::BackgroundFlowOptions options;
+  options.grid.cache_dir = cache_dir;
+  const auto flow = hsrod::make_background_flow(geometry, fluid, inflow, options);
+
+  hsrod::TwoWayWindowOptions window;
+  window.cells_per_diameter = c.window_cells;
+  const auto model = hsrod::make_hydrodynamic_model(c.model, {1e-3, kGap, kD},
+                                                    hsrod::ConfinementTable::default_table(), window);
+
+  hsrod::RodSpec spec;
+  spec.number_of_sections = 10;
+  spec.sphere_diameter = kD;
+  spec.centre = Eigen::Vector3d(150e-6, 100e-6, 10e-6);
+  spec.angle = 10.0 * kPi / 180.0;
+  const hsrod::BeamBondMaterial material{c.youngs_modulus, 0.3, kD, 0.0};  // bond diameter = d (fix rod/bonds default)
+  hsrod::OverdampedRod rod = hsrod::make_overdamped_rod(hsrod::make_rod_layout(spec), material, kD);
+
+  hsrod::WallContactParameters walls;
+  walls.youngs_modulus = c.youngs_modulus;
+  walls.poisson_ratio = 0.3;
+  walls.gap_bottom = 0.0;
+
+  hsrod::RodGeometry rod_geometry;
+  rod_geometry.sphere_diameter = kD;
+  hsrod::RodDrag drag;
+  hsrod::OverdampedRodSolver solver;
+  std::vector<PassageSample> samples{sample(0, rod)};
+  for (int step = 1; step <= c.steps; ++step) {
+    rod_geometry.positions = rod.positions;
+    model->evaluate(rod_geometry, *flow, drag);
+    solver.step(rod, drag, c.dt, &geometry, &walls);
+    if (step % c.sample_every == 0 || step == c.steps) samples.push_back(sample(step, rod));
+  }
+  return samples;
+}
+
+}  // namespace hsrod_test

@@ -6,7 +6,11 @@
 #include <Eigen/SparseLU>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <memory>
+#include <thread>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -26,8 +30,23 @@ struct Neighbour {
 
 class Stencils {
  public:
-  Stencils(const ChannelGeometry& geo, const MacGrid& g, const MacMasks& m)
-      : geo_(geo), g_(g), m_(m) {}
+  Stencils(const ChannelGeometry& geo, const MacGrid& g, const MacMasks& m,
+           bool exponential_wall_layer)
+      : geo_(geo), g_(g), m_(m), fitted_(exponential_wall_layer) {}
+
+  bool fitted() const { return fitted_; }
+
+  // Decay rate [1/H] of the Brinkman wall layer along the unit direction
+  // `line` at p: the layer decays as exp(-sqrt(12) n) in the wall distance n
+  // (units of H; flow/README.md), i.e. at sqrt(12) |n_wall . line| along the
+  // line. 0 without the exponential wall layer and beyond ten layer
+  // thicknesses (exp(-10) = 5e-5), where the standard stencil is used.
+  double layer_rate(const Eigen::Vector2d& p, const Eigen::Vector2d& line) const {
+    if (!fitted_) return 0.0;
+    const double k = std::sqrt(12.0);
+    if (!(geo_.signed_distance(p.x(), p.y()) * k < 10.0)) return 0.0;
+    return k * std::abs(geo_.wall_normal(p.x(), p.y()).dot(line));
+  }
 
   Eigen::Vector2d position(Component c, int i, int j) const {
     return c == Component::kU ? g_.u_position(i, j) : g_.v_position(i, j);
@@ -78,6 +97,7 @@ class Stencils {
     double other_weight = 0.0;
   };
   FaceFlux face_flux(Component c, int i, int j) const {
+    if (fitted_) return fitted_face_flux(c, i, j);
     const Eigen::Vector2d p = position(c, i, j);
     const bool is_u = c == Component::kU;
     const Eigen::Vector2d line = is_u ? Eigen::Vector2d(0, 1) : Eigen::Vector2d(1, 0);
@@ -113,10 +133,68 @@ class Stencils {
     return f;
   }
 
+  // face_flux with the exponential wall layer: the velocity along the face
+  // line at distance s from the wall is taken as A phi(s), phi the layer
+  // shape of line_stencils.h (decay rate layer_rate; linear for rate 0), A
+  // fitted to the node value at distance d. The face [d - h/2, d + h/2]
+  // plus the fluid sliver [0, d - h/2] of a neighbouring face whose centre
+  // is in the wall carry F/h = Phi(d + h/2) / (h phi(d)); a face whose line
+  // meets a wall within [h, 2h) carries [Phi(d + h/2) - Phi(d - h/2)] / (h
+  // phi(d)). Close to the wall (d < h/2) A is blended with the next node's
+  // estimate, as in face_flux.
+  FaceFlux fitted_face_flux(Component c, int i, int j) const {
+    const Eigen::Vector2d p = position(c, i, j);
+    const bool is_u = c == Component::kU;
+    const Eigen::Vector2d line = is_u ? Eigen::Vector2d(0, 1) : Eigen::Vector2d(1, 0);
+    const double h = is_u ? g_.hy : g_.hx;
+    const double dm = geo_.ray_distance_to_wall(p, -line, 2.0 * h);
+    const double dp = geo_.ray_distance_to_wall(p, line, 2.0 * h);
+    const bool wm = dm < h, wp = dp < h;
+    FaceFlux f;
+    if (wm && wp) {  // narrow gap: plain aperture
+      f.self = (std::min(dm, 0.5 * h) + std::min(dp, 0.5 * h)) / h;
+      return f;
+    }
+    const double kappa = layer_rate(p, line);
+    if (!wm && !wp) {
+      const double d = std::min(dm, dp);
+      if (!(d < 2.0 * h)) return f;
+      f.self = (wall_layer_shape_integral(d + 0.5 * h, kappa) -
+                wall_layer_shape_integral(d - 0.5 * h, kappa)) /
+               (h * wall_layer_shape(d, kappa));
+      return f;
+    }
+    const double d = std::max(wm ? dm : dp, kMinWallFraction * h);
+    const double span = wall_layer_shape_integral(d + 0.5 * h, kappa) / h;
+    f.self = span / wall_layer_shape(d, kappa);
+    if (d >= 0.5 * h) return f;
+    const int step = wm ? 1 : -1;  // towards the fluid
+    const int fi = is_u ? i : i + step, fj = is_u ? j + step : j;
+    const int ny_nodes = is_u ? g_.ny : g_.ny + 1, nx_nodes = is_u ? g_.nx + 1 : g_.nx;
+    const bool usable = fi >= 0 && fi < nx_nodes && fj >= 0 && fj < ny_nodes &&
+                        kind(c, index(c, fi, fj)) == NodeKind::kUnknown;
+    if (!usable) return f;
+    const double w = 2.0 * d / h;
+    f.self = span * w / wall_layer_shape(d, kappa);
+    f.other = index(c, fi, fj);
+    f.other_weight = span * (1.0 - w) / wall_layer_shape(d + h, kappa);
+    return f;
+  }
+
+  // Second difference along `axis` (0: x, 1: y) at node (i, j) with
+  // neighbours at distances a, b: Shortley-Weller, exponentially fitted to
+  // the wall layer when that is on (line_stencils.h).
+  LineWeights second(Component c, int i, int j, int axis, double a, double b) const {
+    if (!fitted_) return second_difference(a, b);
+    const Eigen::Vector2d line = axis == 0 ? Eigen::Vector2d(1, 0) : Eigen::Vector2d(0, 1);
+    return fitted_second_difference(a, b, layer_rate(position(c, i, j), line));
+  }
+
  private:
   const ChannelGeometry& geo_;
   const MacGrid& g_;
   const MacMasks& m_;
+  bool fitted_;
 };
 
 // Developed inlet profile of the discrete operator: -u'' + 12 u = 1 along the
@@ -133,7 +211,7 @@ std::vector<double> discrete_inlet_profile(const Stencils& st, const MacGrid& g,
     if (id[j] < 0) continue;
     const Neighbour lo = st.neighbour(Component::kU, 0, j, 0, -1);
     const Neighbour hi = st.neighbour(Component::kU, 0, j, 0, +1);
-    const LineWeights w = second_difference(lo.dist, hi.dist);
+    const LineWeights w = st.second(Component::kU, 0, j, 1, lo.dist, hi.dist);
     t.emplace_back(id[j], id[j], 12.0 - w.self);
     if (lo.node >= 0) t.emplace_back(id[j], id[lo.node % g.ny], -w.minus);
     if (hi.node >= 0) t.emplace_back(id[j], id[hi.node % g.ny], -w.plus);
@@ -142,7 +220,18 @@ std::vector<double> discrete_inlet_profile(const Stencils& st, const MacGrid& g,
   a.setFromTriplets(t.begin(), t.end());
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(a);
   const Eigen::VectorXd s = lu.solve(rhs);
-  const double flux = s.sum() * g.hy;
+  // Flux through the inlet: midpoint rule, or with the cut-face weights of
+  // the exponential wall layer, as the continuity equations use them.
+  double flux = s.sum() * g.hy;
+  if (st.fitted()) {
+    flux = 0.0;
+    for (int j = 0; j < g.ny; ++j) {
+      if (id[j] < 0) continue;
+      const Stencils::FaceFlux f = st.face_flux(Component::kU, 0, j);
+      flux += f.self * s[id[j]] * g.hy;
+      if (f.other >= 0 && id[f.other % g.ny] >= 0) flux += f.other_weight * s[id[f.other % g.ny]] * g.hy;
+    }
+  }
   std::vector<double> profile(g.ny, 0.0);
   for (int j = 0; j < g.ny; ++j)
     if (id[j] >= 0) profile[j] = s[id[j]] * width / flux;
@@ -152,8 +241,8 @@ std::vector<double> discrete_inlet_profile(const Stencils& st, const MacGrid& g,
 class Assembler {
  public:
   Assembler(const ChannelGeometry& geo, const MacGrid& g, const MacMasks& m,
-            const std::vector<double>& inlet)
-      : g_(g), m_(m), st_(geo, g, m), inlet_(inlet) {
+            const std::vector<double>& inlet, bool exponential_wall_layer)
+      : g_(g), m_(m), st_(geo, g, m, exponential_wall_layer), inlet_(inlet) {
     uid_.assign(g.u_count(), -1);
     vid_.assign(g.v_count(), -1);
     pid_.assign(g.cell_count(), -1);
@@ -168,6 +257,10 @@ class Assembler {
     for (int i = 1; i <= g.nx; ++i)
       for (int j = 0; j < g.ny; ++j)
         if (uid_[g.u_index(i, j)] >= 0) flux_u_[g.u_index(i, j)] = st_.face_flux(Component::kU, i, j);
+    if (exponential_wall_layer)  // inlet faces carry the same layer profile
+      for (int j = 0; j < g.ny; ++j)
+        if (m.u[g.u_index(0, j)] == NodeKind::kInlet)
+          flux_u_[g.u_index(0, j)] = st_.face_flux(Component::kU, 0, j);
     for (int i = 0; i < g.nx; ++i)
       for (int j = 0; j <= g.ny; ++j)
         if (vid_[g.v_index(i, j)] >= 0) flux_v_[g.v_index(i, j)] = st_.face_flux(Component::kV, i, j);
@@ -286,7 +379,9 @@ class Assembler {
   void add_flux(Component c, int row, int node, double w, std::vector<Eigen::Triplet<double>>& t,
                 Eigen::VectorXd& rhs) const {
     const bool unknown = (c == Component::kU ? uid_[node] : vid_[node]) >= 0;
-    if (!unknown) {
+    const bool weighted_inlet =
+        st_.fitted() && c == Component::kU && m_.u[node] == NodeKind::kInlet;
+    if (!unknown && !weighted_inlet) {
       add(c, row, node, w, t, rhs);  // inlet value or nothing
       return;
     }
@@ -304,7 +399,7 @@ class Assembler {
       const int di = axis == 0 ? 1 : 0, dj = 1 - di;
       const Neighbour lo = st_.neighbour(c, i, j, -di, -dj);
       const Neighbour hi = st_.neighbour(c, i, j, di, dj);
-      const LineWeights d2 = second_difference(lo.dist, hi.dist);
+      const LineWeights d2 = st_.second(c, i, j, axis, lo.dist, hi.dist);
       const LineWeights d1 = first_difference(lo.dist, hi.dist);
       const double a = advection[axis];
       diag += -d2.self + a * d1.self;
@@ -336,32 +431,88 @@ struct FrozenLuPreconditioner {
   Eigen::ComputationInfo info() const { return Eigen::Success; }
 };
 
+using SparseLu = Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>>;
+
+// A factorisation that may be abandoned: matrix and LU live in shared state
+// so that a worker thread left running after a cancellation never touches
+// freed memory (it finishes on its own; the process normally exits).
+struct LuJob {
+  Eigen::SparseMatrix<double> matrix;
+  SparseLu lu;
+  std::atomic<bool> done{false};
+};
+
+void report(const SolveControl& control, const std::string& what) {
+  if (control.progress) control.progress(what);
+}
+
+void check_cancel(const SolveControl& control, const char* where) {
+  if (control.cancel_requested && control.cancel_requested())
+    throw FlowSolveCancelled(std::string("background-flow grid solve interrupted ") + where);
+}
+
+// Factorises job->matrix; with a cancel callback the factorisation runs in
+// a worker thread while this thread polls the callback every 20 ms, so a
+// request is honoured within ~20 ms even inside a long factorisation.
+void factorise(const std::shared_ptr<LuJob>& job, const SolveControl& control) {
+  if (!control.cancel_requested) {
+    job->lu.compute(job->matrix);
+    job->done = true;
+    return;
+  }
+  std::thread worker([job] {
+    job->lu.compute(job->matrix);
+    job->done = true;
+  });
+  while (!job->done) {
+    if (control.cancel_requested()) {
+      worker.detach();
+      throw FlowSolveCancelled(
+          "background-flow grid solve interrupted during the sparse LU factorisation");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  worker.join();
+}
+
 }  // namespace
 
 BrinkmanGridSolution solve_brinkman_on_grid(const ChannelGeometry& geo, const MacGrid& grid,
                                             const BrinkmanGridSettings& settings) {
   if (grid.nx < 2 || grid.ny < 2 || !(grid.hx > 0.0) || !(grid.hy > 0.0))
     throw std::invalid_argument("solve_brinkman_on_grid: need at least 2 x 2 cells");
+  const SolveControl& control = settings.control;
+  check_cancel(control, "before it started");
   BrinkmanGridSolution sol;
   sol.grid = grid;
   sol.masks = classify_mac_nodes(geo, grid);
-  const Stencils stencils(geo, grid, sol.masks);
+  const bool fitted = settings.exponential_wall_layer;
+  const Stencils stencils(geo, grid, sol.masks, fitted);
   const std::vector<double> inlet =
       discrete_inlet_profile(stencils, grid, sol.masks, geo.width());
   std::vector<double> inlet_by_node(inlet);  // indexed by j = node % ny for column 0
+  check_cancel(control, "while classifying the grid");
 
-  const Assembler asm_(geo, grid, sol.masks, inlet_by_node);
+  const Assembler asm_(geo, grid, sol.masks, inlet_by_node, fitted);
   sol.unknowns = asm_.size();
-  Eigen::SparseMatrix<double> a;
   Eigen::VectorXd rhs, x;
   // Brinkman-Stokes system: one sparse LU.
-  asm_.assemble(Eigen::VectorXd::Zero(asm_.size()), 0.0, a, rhs);
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
-  lu.compute(a);
+  auto stokes = std::make_shared<LuJob>();
+  asm_.assemble(Eigen::VectorXd::Zero(asm_.size()), 0.0, stokes->matrix, rhs);
+  check_cancel(control, "while assembling");
+  {
+    std::ostringstream msg;
+    msg << "factorising the Brinkman system: " << grid.nx << " x " << grid.ny << " cells, "
+        << sol.unknowns << " unknowns";
+    report(control, msg.str());
+  }
+  factorise(stokes, control);
+  const SparseLu& lu = stokes->lu;
   if (lu.info() != Eigen::Success)
     throw std::runtime_error("solve_brinkman_on_grid: sparse LU factorisation failed: " +
-                             lu.lastErrorMessage());
+                             stokes->lu.lastErrorMessage());
   x = lu.solve(rhs);
+  Eigen::SparseMatrix<double>& a = stokes->matrix;
 
   // Inertia: Picard (Oseen) iterations. Each Oseen system is solved by
   // BiCGSTAB preconditioned with the Brinkman-Stokes LU above (the advection
@@ -374,19 +525,28 @@ BrinkmanGridSolution solve_brinkman_on_grid(const ChannelGeometry& geo, const Ma
     krylov.setTolerance(1e-3 * settings.picard_tolerance);
     krylov.setMaxIterations(200);
     for (int iter = 1; iter <= settings.max_picard_iterations; ++iter) {
+      check_cancel(control, "during the Picard iterations");
       asm_.assemble(x, inertia, a, rhs);
       krylov.compute(a);
       Eigen::VectorXd next = krylov.solveWithGuess(rhs, x);
       if (krylov.info() != Eigen::Success) {
-        Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> oseen(a);
-        if (oseen.info() != Eigen::Success)
+        auto oseen = std::make_shared<LuJob>();
+        oseen->matrix = a;
+        factorise(oseen, control);
+        if (oseen->lu.info() != Eigen::Success)
           throw std::runtime_error("solve_brinkman_on_grid: Oseen factorisation failed: " +
-                                   oseen.lastErrorMessage());
-        next = oseen.solve(rhs);
+                                   oseen->lu.lastErrorMessage());
+        next = oseen->lu.solve(rhs);
       }
       sol.picard_iterations = iter;
       sol.picard_change = asm_.velocity_change(next, x);
       x = next;
+      {
+        std::ostringstream msg;
+        msg << "Picard iteration " << iter << ": max velocity change " << sol.picard_change
+            << " U (tolerance " << settings.picard_tolerance << ")";
+        report(control, msg.str());
+      }
       if (sol.picard_change < settings.picard_tolerance) break;
       if (iter == settings.max_picard_iterations) {
         std::ostringstream msg;

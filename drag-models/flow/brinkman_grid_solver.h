@@ -30,9 +30,29 @@
 
 #include "flow/mac_grid.h"
 
+#include <functional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace hsrod {
+
+// Thrown when SolveControl::cancel_requested returned true during a solve.
+class FlowSolveCancelled : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Hooks of a long grid solve, set by the caller (e.g. the LIGGGHTS glue,
+// whose signal handler sets a flag the callback reads). drag-models itself
+// installs no signal handler.
+struct SolveControl {
+  // Polled between the solve's phases and every 20 ms during the sparse
+  // factorisation; returning true ends the solve with FlowSolveCancelled.
+  std::function<bool()> cancel_requested;
+  // Called with one line at each phase (factorisation, Picard iterations).
+  std::function<void(const std::string&)> progress;
+};
 
 struct BrinkmanGridSolution {
   MacGrid grid;
@@ -49,11 +69,17 @@ struct BrinkmanGridSettings {
   double inertia_reynolds = 0.0;  // Re_H = rho U H / mu; 0 = no inertia term
   int max_picard_iterations = 50;
   double picard_tolerance = 1e-9;  // on max |u^{k+1} - u^k| [U]
+  // Exponentially fitted wall layer (line_stencils.h): the second differences
+  // and cut-face fluxes are exact for the Brinkman wall layer
+  // u = U (1 - exp(-sqrt(12) n / H)), so the grid need not resolve the layer
+  // H / sqrt(12) (thin gaps). Off: the plain Shortley-Weller scheme.
+  bool exponential_wall_layer = false;
+  SolveControl control;
 };
 
 // Solves on `grid` over `scaled_geometry` (planform in units of H, lower corner
 // at the origin). Throws std::runtime_error if the factorisation fails or the
-// Picard iterations do not converge.
+// Picard iterations do not converge, FlowSolveCancelled when cancelled.
 BrinkmanGridSolution solve_brinkman_on_grid(const ChannelGeometry& scaled_geometry,
                                             const MacGrid& grid,
                                             const BrinkmanGridSettings& settings);

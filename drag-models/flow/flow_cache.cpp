@@ -49,7 +49,7 @@ std::uint64_t fnv1a64(const void* data, std::size_t size, std::uint64_t seed) {
 }
 
 std::string brinkman_cache_key(const ChannelGeometry& geo, const MacGrid& grid,
-                               double inertia_reynolds) {
+                               double inertia_reynolds, bool exponential_wall_layer) {
   std::ostringstream k;
   k.precision(17);
   k << "hsrod depth-averaged Brinkman field; scheme " << kBrinkmanSchemeVersion
@@ -60,6 +60,7 @@ std::string brinkman_cache_key(const ChannelGeometry& geo, const MacGrid& grid,
       << ')';
   k << "; grid " << grid.nx << 'x' << grid.ny << " h " << grid.hx << ' ' << grid.hy
     << "; inertia Re_H " << inertia_reynolds;
+  if (exponential_wall_layer) k << "; wall layer exponentially fitted";
   return k.str();
 }
 

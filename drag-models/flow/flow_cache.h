@@ -33,8 +33,10 @@ namespace hsrod {
 // solver's results change so that old cache files are not used.
 inline constexpr const char* kBrinkmanSchemeVersion = "mac-shortley-weller-cutflux-2";
 
+// `exponential_wall_layer` (brinkman_grid_solver.h) adds a term to the key;
+// keys of the plain scheme are unchanged.
 std::string brinkman_cache_key(const ChannelGeometry& scaled_geometry, const MacGrid& grid,
-                               double inertia_reynolds);
+                               double inertia_reynolds, bool exponential_wall_layer = false);
 std::uint64_t fnv1a64(const void* data, std::size_t size, std::uint64_t seed = 14695981039346656037ull);
 // "brinkman-<16 hex digits>.bin"
 std::string brinkman_cache_file_name(const std::string& key);

@@ -25,6 +25,28 @@ void check_options(const GridBrinkmanOptions& o) {
   if (o.cells_across_opening < 2) fail("cells_across_opening must be >= 2");
   if (o.max_picard_iterations < 1) fail("max_picard_iterations must be >= 1");
   if (!(o.picard_tolerance > 0.0)) fail("picard_tolerance must be > 0");
+  if (o.max_cells < 4) fail("max_cells must be >= 4");
+  if (!(o.max_memory_bytes > 0.0)) fail("max_memory_bytes must be > 0");
+  if (!(o.max_predicted_seconds > 0.0)) fail("max_predicted_seconds must be > 0 s");
+  if (!(o.resolved_layer_max_seconds >= 0.0)) fail("resolved_layer_max_seconds must be >= 0 s");
+}
+
+// Grid of cells no larger than h [m] over the planform; throws over max_cells.
+MacGrid grid_with_cell_size(const ChannelGeometry& geo, double h, long max_cells) {
+  const double nx = std::ceil(geo.length() / h - 1e-9), ny = std::ceil(geo.width() / h - 1e-9);
+  if (!(nx * ny <= static_cast<double>(max_cells))) {
+    std::ostringstream msg;
+    msg << "GridBrinkmanFlow: grid of " << nx << " x " << ny << " cells (cell size " << h
+        << " m) exceeds max_cells = " << max_cells
+        << "; choose a larger cell_size or fewer cells_per_wall_layer / cells_across_opening";
+    throw std::invalid_argument(msg.str());
+  }
+  MacGrid g;
+  g.nx = std::max(2, static_cast<int>(nx));
+  g.ny = std::max(4, static_cast<int>(ny));
+  g.hx = geo.length() / g.nx / geo.gap_height();
+  g.hy = geo.width() / g.ny / geo.gap_height();
+  return g;
 }
 
 }  // namespace
@@ -38,21 +60,34 @@ double grid_cell_size(const ChannelGeometry& geo, const GridBrinkmanOptions& o) 
 }
 
 MacGrid make_mac_grid(const ChannelGeometry& geo, const GridBrinkmanOptions& o) {
-  const double h = grid_cell_size(geo, o);
-  const double nx = std::ceil(geo.length() / h - 1e-9), ny = std::ceil(geo.width() / h - 1e-9);
-  if (nx * ny > static_cast<double>(o.max_cells)) {
-    std::ostringstream msg;
-    msg << "GridBrinkmanFlow: grid of " << nx << " x " << ny << " cells (cell size " << h
-        << " m) exceeds max_cells = " << o.max_cells
-        << "; choose a larger cell_size or fewer cells_per_wall_layer / cells_across_opening";
-    throw std::invalid_argument(msg.str());
+  return grid_with_cell_size(geo, grid_cell_size(geo, o), o.max_cells);
+}
+
+GridChoice choose_grid(const ChannelGeometry& geo, const GridBrinkmanOptions& o) {
+  check_options(o);
+  using WallLayer = GridBrinkmanOptions::WallLayer;
+  const ChannelGeometry scaled = scaled_planform(geo);
+  GridChoice c;
+  c.exponential_wall_layer = o.wall_layer == WallLayer::kExponential;
+  if (o.wall_layer == WallLayer::kAuto && o.cell_size == 0.0) {
+    // Would a grid resolving the wall layer be affordable? Predicted from the
+    // cell count alone (a grid over max_cells counts as unaffordable).
+    const double h = grid_cell_size(geo, o);
+    const double cells = std::ceil(geo.length() / h - 1e-9) * std::ceil(geo.width() / h - 1e-9);
+    bool affordable = cells <= static_cast<double>(o.max_cells);
+    if (affordable) {
+      const MacGrid resolved = grid_with_cell_size(geo, h, o.max_cells);
+      affordable = estimate_grid_solve(scaled, resolved, o.include_inertia).seconds <=
+                   o.resolved_layer_max_seconds;
+    }
+    c.exponential_wall_layer = !affordable;
   }
-  MacGrid g;
-  g.nx = std::max(2, static_cast<int>(nx));
-  g.ny = std::max(4, static_cast<int>(ny));
-  g.hx = geo.length() / g.nx / geo.gap_height();
-  g.hy = geo.width() / g.ny / geo.gap_height();
-  return g;
+  const double h = c.exponential_wall_layer && o.cell_size == 0.0
+                       ? geo.narrowest_opening() / o.cells_across_opening
+                       : grid_cell_size(geo, o);
+  c.grid = grid_with_cell_size(geo, h, o.max_cells);
+  c.estimate = estimate_grid_solve(scaled, c.grid, o.include_inertia);
+  return c;
 }
 
 ChannelGeometry scaled_planform(const ChannelGeometry& geo) {
@@ -74,8 +109,12 @@ GridBrinkmanFlow::GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidP
                                                     geometry.gap_height() / fluid.dynamic_viscosity
                                               : 0.0;
   const ChannelGeometry scaled = scaled_planform(geometry);
-  const MacGrid grid = make_mac_grid(geometry, options);
-  const std::string key = brinkman_cache_key(scaled, grid, inertia_reynolds_);
+  const GridChoice choice = choose_grid(geometry, options);
+  const MacGrid& grid = choice.grid;
+  exponential_wall_layer_ = choice.exponential_wall_layer;
+  estimate_ = choice.estimate;
+  const std::string key =
+      brinkman_cache_key(scaled, grid, inertia_reynolds_, exponential_wall_layer_);
 
   if (options.use_cache) {
     const std::filesystem::path dir =
@@ -90,8 +129,13 @@ GridBrinkmanFlow::GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidP
     }
   }
 
+  // Bounded work: refuse before the first allocation of solver size.
+  check_grid_solve_budget(estimate_, GridSolveLimits{options.max_cells, options.max_memory_bytes,
+                                                     options.max_predicted_seconds});
   const auto start = std::chrono::steady_clock::now();
   BrinkmanGridSettings settings;
+  settings.exponential_wall_layer = exponential_wall_layer_;
+  settings.control = options.control;
   settings.inertia_reynolds = inertia_reynolds_;
   settings.max_picard_iterations = options.max_picard_iterations;
   settings.picard_tolerance = options.picard_tolerance;
@@ -110,10 +154,67 @@ GridBrinkmanFlow::GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidP
 // value at the wall point p_w = p - phi n, weighted by the smoothstep
 // w(s) = 1 - 3 s^2 + 2 s^3, s = phi / band: exact zero on the wall, the wall
 // shear (w'(0) = 0) and the field beyond the band (C1 at s = 1) unchanged.
+// Exponentially fitted wall layer: the grid does not resolve the layer, so
+// within layer_band() of a wall the velocity is rebuilt from the layer's
+// analytic structure (Brinkman boundary layer of thickness 1/k, k = sqrt(12)/H):
+// the outer (slip) field is taken from the interpolant at two points on the
+// wall normal, at distances r = layer_band() and r + h_cell where the cubic
+// interpolant is accurate, divided by the layer shape there, and extrapolated linearly in the wall
+// distance phi; then
+//     u_t = (1 - exp(-k phi)) u~_t(phi),
+//     u_n = u~_n(phi) + (du~_n/dphi) exp(-k phi) / k,
+// the second from continuity across the layer (u_n = 0 on the wall). Returns
+// false where the two points do not see the same wall (corners), and the
+// plain interpolant is used there.
+bool GridBrinkmanFlow::layer_velocity(double x, double y, double phi,
+                                      Eigen::Vector2d* u) const {
+  const double h = geometry_.gap_height();
+  const double k = std::sqrt(12.0) / h;
+  const double cell = std::max(cell_size_x(), cell_size_y());
+  const double r = layer_band();
+  const Eigen::Vector2d n = geometry_.wall_normal(x, y);
+  const Eigen::Vector2d t(-n.y(), n.x());
+  const Eigen::Vector2d p(x, y);
+  const Eigen::Vector2d p2 = p + (r - phi) * n, p3 = p + (r + cell - phi) * n;
+  auto usable = [&](const Eigen::Vector2d& q, double distance) {
+    return q.x() > geometry_.x_lo() + cell && q.x() < geometry_.x_hi() - cell &&
+           std::abs(geometry_.signed_distance(q.x(), q.y()) - distance) < 0.05 * cell;
+  };
+  if (!usable(p2, r) || !usable(p3, r + cell)) return false;
+  auto field_at = [&](const Eigen::Vector2d& q) {
+    const double qx = std::clamp(q.x(), geometry_.x_lo(), geometry_.x_hi());
+    return field_.velocity((qx - geometry_.x_lo()) / h, (q.y() - geometry_.y_lo()) / h);
+  };
+  const Eigen::Vector2d u2 = field_at(p2), u3 = field_at(p3);
+  const double s2 = -std::expm1(-k * r), s3 = -std::expm1(-k * (r + cell));
+  const double t2 = u2.dot(t) / s2, t3 = u3.dot(t) / s3;  // outer tangential
+  const double n2 = u2.dot(n), n3 = u3.dot(n);            // outer normal (layer part < e^-5)
+  const double w = (phi - r) / cell;
+  const double ut = -std::expm1(-k * phi) * (t2 + w * (t3 - t2));
+  const double slope = (n3 - n2) / cell;
+  const double un = n2 + w * (n3 - n2) + slope * std::exp(-k * phi) / k;
+  *u = ut * t + un * n;
+  return true;
+}
+
+// Three cells: there the cubic interpolant no longer sees the layer's kink
+// (relative layer amplitude exp(-3 k h) < 0.2 for k h >= 0.5). Grids with
+// k h < 0.5 resolve the layer and need no reconstruction.
+double GridBrinkmanFlow::layer_band() const {
+  if (!exponential_wall_layer_) return 0.0;
+  const double k = std::sqrt(12.0) / geometry_.gap_height();
+  const double cell = std::max(cell_size_x(), cell_size_y());
+  return k * cell < 0.5 ? 0.0 : 3.0 * cell;
+}
+
 Eigen::Vector2d GridBrinkmanFlow::velocity(double x, double y) const {
   x = std::clamp(x, geometry_.x_lo(), geometry_.x_hi());
   const double phi = geometry_.signed_distance(x, y);
   if (phi <= 0.0) return Eigen::Vector2d::Zero();
+  if (phi < layer_band()) {
+    Eigen::Vector2d u;
+    if (layer_velocity(x, y, phi, &u)) return mean_velocity_ * u;
+  }
   const double h = geometry_.gap_height();
   auto field_at = [&](double px, double py) {
     return field_.velocity((px - geometry_.x_lo()) / h, (py - geometry_.y_lo()) / h);
@@ -134,6 +235,17 @@ Eigen::Matrix2d GridBrinkmanFlow::velocity_gradient(double x, double y) const {
   x = std::clamp(x, geometry_.x_lo(), geometry_.x_hi());
   const double phi = geometry_.signed_distance(x, y);
   if (phi <= 0.0) return Eigen::Matrix2d::Zero();
+  if (phi < layer_band()) {
+    // Central differences of the layer reconstruction (step 1e-4 of the
+    // layer thickness, kept inside the fluid).
+    const double step = std::min(1e-4 * geometry_.gap_height() / std::sqrt(12.0), 0.5 * phi);
+    Eigen::Matrix2d g;
+    for (int b = 0; b < 2; ++b) {
+      const Eigen::Vector2d e = b == 0 ? Eigen::Vector2d(step, 0) : Eigen::Vector2d(0, step);
+      g.col(b) = (velocity(x + e.x(), y + e.y()) - velocity(x - e.x(), y - e.y())) / (2 * step);
+    }
+    return g;
+  }
   const double h = geometry_.gap_height();
   auto grad_at = [&](double px, double py) {
     return field_.velocity_gradient((px - geometry_.x_lo()) / h, (py - geometry_.y_lo()) / h);
@@ -162,7 +274,8 @@ std::string GridBrinkmanFlow::description() const {
   std::ostringstream s;
   s << "grid Brinkman solver (MAC, Shortley-Weller walls, cut-face fluxes): " << field_.grid().nx << " x "
     << field_.grid().ny << " cells of " << cell_size_x() << " x " << cell_size_y() << " m, "
-    << (inertia_reynolds_ > 0.0 ? "with" : "without") << " gap-averaged inertia, ";
+    << (inertia_reynolds_ > 0.0 ? "with" : "without") << " gap-averaged inertia, "
+    << (exponential_wall_layer_ ? "exponentially fitted wall layer, " : "");
   if (loaded_from_cache_)
     s << "loaded from cache " << cache_file_;
   else

@@ -4,7 +4,9 @@
 #pragma once
 
 #include "flow/background_flow.h"
+#include "flow/brinkman_grid_solver.h"
 #include "flow/fluid_properties.h"
+#include "flow/grid_solve_budget.h"
 #include "flow/inflow.h"
 #include "flow/staggered_field.h"
 
@@ -22,6 +24,25 @@ struct GridBrinkmanOptions {
   int cells_across_opening = 16;
   // Largest accepted grid [cells]; larger requests throw std::invalid_argument.
   long max_cells = 4'000'000;
+  // Limits on the predicted peak memory [bytes] and wall time [s] of a grid
+  // solve (grid_solve_budget.h), checked before anything is allocated; a
+  // larger request throws GridSolveTooLarge with the figures.
+  double max_memory_bytes = 2.0e9;
+  double max_predicted_seconds = 120.0;
+  // How the Brinkman wall layer H/sqrt(12) is treated:
+  //  kResolved:    the grid resolves it (cells_per_wall_layer cells per layer);
+  //  kExponential: exponentially fitted stencils (brinkman_grid_solver.h), exact
+  //                for the layer profile, so the grid only needs
+  //                cells_across_opening cells across the narrowest opening;
+  //  kAuto:        kResolved, unless an automatic grid that resolves the layer
+  //                would take longer than resolved_layer_max_seconds
+  //                (predicted): then kExponential (thin gaps). An explicit
+  //                cell_size keeps kResolved.
+  enum class WallLayer { kAuto, kResolved, kExponential };
+  WallLayer wall_layer = WallLayer::kAuto;
+  double resolved_layer_max_seconds = 10.0;
+  // Cancellation and progress hooks of the solve (brinkman_grid_solver.h).
+  SolveControl control;
   // Gap-averaged inertia (6/5) rho (u.grad)u, by Picard iterations.
   bool include_inertia = false;
   int max_picard_iterations = 50;
@@ -42,11 +63,24 @@ MacGrid make_mac_grid(const ChannelGeometry& geometry, const GridBrinkmanOptions
 // The planform in units of H with its lower corner at the origin.
 ChannelGeometry scaled_planform(const ChannelGeometry& geometry);
 
+// The grid a GridBrinkmanFlow solves on, how it treats the wall layer, and
+// the predicted cost of the solve; decided from the options alone (nothing
+// of grid size is allocated). Throws std::invalid_argument for bad options
+// or a grid over max_cells.
+struct GridChoice {
+  MacGrid grid;
+  bool exponential_wall_layer = false;
+  GridSolveEstimate estimate;
+};
+GridChoice choose_grid(const ChannelGeometry& geometry, const GridBrinkmanOptions& options);
+
 class GridBrinkmanFlow final : public BackgroundFlow {
  public:
   // Loads the field from the cache or solves (and stores) it. Throws
-  // std::invalid_argument for bad fluid/options, std::runtime_error if the
-  // solve fails.
+  // std::invalid_argument for bad fluid/options, GridSolveTooLarge (an
+  // invalid_argument) when the predicted solve exceeds the limits,
+  // FlowSolveCancelled when options.control cancels it, std::runtime_error
+  // if the solve fails.
   GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidProperties& fluid,
                    const Inflow& inflow, const GridBrinkmanOptions& options = {});
 
@@ -65,6 +99,8 @@ class GridBrinkmanFlow final : public BackgroundFlow {
   double solve_seconds() const { return solve_seconds_; }          // 0 if loaded
   int picard_iterations() const { return picard_iterations_; }
   int unknowns() const { return unknowns_; }                        // 0 if loaded
+  bool exponential_wall_layer() const { return exponential_wall_layer_; }
+  const GridSolveEstimate& predicted_cost() const { return estimate_; }
   const StaggeredField& field() const { return field_; }
   double cell_size_x() const { return field_.grid().hx * geometry_.gap_height(); }  // m
   double cell_size_y() const { return field_.grid().hy * geometry_.gap_height(); }  // m
@@ -78,6 +114,12 @@ class GridBrinkmanFlow final : public BackgroundFlow {
   static long total_solves();
 
  private:
+  // Wall-layer reconstruction of the exponentially fitted scheme (see .cpp).
+  bool layer_velocity(double x, double y, double phi, Eigen::Vector2d* u) const;
+  // Distance [m] from the walls within which layer_velocity is used (0 when
+  // the grid resolves the layer).
+  double layer_band() const;
+
   ChannelGeometry geometry_;
   double mean_velocity_;      // U [m/s]
   double viscosity_;          // mu [Pa s]
@@ -89,6 +131,8 @@ class GridBrinkmanFlow final : public BackgroundFlow {
   double solve_seconds_ = 0.0;
   int picard_iterations_ = 0;
   int unknowns_ = 0;
+  bool exponential_wall_layer_ = false;
+  GridSolveEstimate estimate_;
 };
 
 }  // namespace hsrod

@@ -12,6 +12,11 @@
 //   source <free text: what produced this table>
 //   columns beta sphere_friction sphere_driving parallel_friction perpendicular_friction parallel_driving perpendicular_driving
 //   <one row of 7 numbers per beta, beta strictly increasing, 0 <= beta < 1>
+// Read strictly: the header first; the optional `columns` line names all
+// seven columns once, in any order, and the rows follow that order; each row
+// has exactly seven whole finite numbers; every row is in the physical
+// ranges of coefficient_range_problem(). Anything else is refused with the
+// file, line and problem.
 #pragma once
 
 #include <string>
@@ -64,6 +69,12 @@ class ConfinementTable {
   std::vector<Row> rows_;
   std::string source_;
 };
+
+// "" if the coefficients are physical, else the first problem: friction
+// coefficients > 0 (sphere_friction >= 1: walls only add friction), driving
+// coefficients in (0, 3/2] (carried downstream, at most at the mid-plane
+// velocity); all finite.
+std::string coefficient_range_problem(const ConfinementCoefficients& c);
 
 // Faxen's series for a sphere midway between two parallel walls moving
 // parallel to them (Happel & Brenner 1965, eq. 7-4.28): friction over

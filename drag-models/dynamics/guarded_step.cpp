@@ -1,0 +1,281 @@
+#include "dynamics/guarded_step.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace hsrod {
+namespace {
+
+// Generalised loads (F_i, T_i / r_i per sphere: torques in force units) of
+// bonds, wall and self contacts at the rod's current state; the same terms
+// as OverdampedRodSolver::step, evaluated without linearisation.
+Eigen::VectorXd elastic_loads(const OverdampedRod& rod, const ChannelGeometry* geometry,
+                              const WallContactParameters* walls) {
+  const int n = rod.size();
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(6 * n);
+  std::vector<SphereState> s(n);
+  for (int i = 0; i < n; ++i) {
+    s[i].position = rod.positions[i];
+    s[i].orientation = rod.orientations[i];
+  }
+  for (const RodBond& b : rod.bonds) {
+    const BeamBondLoads l = evaluate_beam_bond(s[b.i], s[b.j], b.rest, b.stiffness, BeamBondDamping{});
+    f.segment<3>(6 * b.i) -= l.force_on_j;
+    f.segment<3>(6 * b.i + 3) += l.torque_on_i / rod.radii[b.i];
+    f.segment<3>(6 * b.j) += l.force_on_j;
+    f.segment<3>(6 * b.j + 3) += l.torque_on_j / rod.radii[b.j];
+  }
+  if (geometry && walls)
+    for (int i = 0; i < n; ++i) {
+      const WallContact c = wall_contact(*geometry, *walls, rod.positions[i], rod.radii[i]);
+      if (c.touching) f.segment<3>(6 * i) += c.force;
+    }
+  if (walls && walls->self_contact && n > 2) {
+    double largest_radius = 0.0;
+    for (double r : rod.radii) largest_radius = std::max(largest_radius, r);
+    std::vector<std::vector<int>> bonded(n);
+    for (const RodBond& b : rod.bonds) {
+      bonded[b.i].push_back(b.j);
+      bonded[b.j].push_back(b.i);
+    }
+    for (const auto& [i, j] : nearby_sphere_pairs(rod.positions, 2.0 * largest_radius)) {
+      if (std::find(bonded[i].begin(), bonded[i].end(), j) != bonded[i].end()) continue;
+      const WallContact c = sphere_contact(*walls, rod.positions[i], rod.radii[i], rod.positions[j], rod.radii[j]);
+      if (!c.touching) continue;
+      f.segment<3>(6 * i) += c.force;
+      f.segment<3>(6 * j) -= c.force;
+    }
+  }
+  return f;
+}
+
+// True when the centre at p lies in a planform wall or outside the gap.
+bool in_wall(const Eigen::Vector3d& p, const ChannelGeometry& geometry, const WallContactParameters* walls) {
+  if (geometry.signed_distance(p.x(), p.y()) < 0.0) return true;
+  if (walls && walls->gap_walls)
+    return p.z() < walls->gap_bottom || p.z() > walls->gap_bottom + geometry.gap_height();
+  return false;
+}
+
+// Which spheres touch a wall.
+std::vector<char> contact_set(const OverdampedRod& rod, const ChannelGeometry* geometry,
+                              const WallContactParameters* walls) {
+  std::vector<char> touching(rod.size(), 0);
+  for (int i = 0; i < rod.size(); ++i)
+    touching[i] = wall_contact(*geometry, *walls, rod.positions[i], rod.radii[i]).touching;
+  return touching;
+}
+
+}  // namespace
+
+std::pair<double, double> bond_strain_and_energy(const OverdampedRod& rod) {
+  double strain = 0.0, energy = 0.0;
+  for (const RodBond& b : rod.bonds) {
+    SphereState si, sj;
+    si.position = rod.positions[b.i];
+    si.orientation = rod.orientations[b.i];
+    sj.position = rod.positions[b.j];
+    sj.orientation = rod.orientations[b.j];
+    const BeamBondLoads l = evaluate_beam_bond(si, sj, b.rest, b.stiffness, BeamBondDamping{});
+    strain = std::max(strain, std::abs(l.axial_strain));
+    energy += l.elastic_energy;
+  }
+  return {strain, energy};
+}
+
+StepAssessment assess_rod_step(const OverdampedRod& before, const OverdampedRod& after,
+                               const OverdampedStepResult& result, const RodDrag& drag, double dt,
+                               const ChannelGeometry* geometry, const WallContactParameters* walls,
+                               const StepGuardLimits& limits) {
+  (void)result;
+  StepAssessment a;
+  const int n = before.size();
+  // Displacement in diameters; a non-finite step is the worst case.
+  Eigen::VectorXd dx(3 * n), dphi(3 * n);
+  for (int i = 0; i < n; ++i) {
+    dx.segment<3>(3 * i) = after.positions[i] - before.positions[i];
+    dphi.segment<3>(3 * i) = rotation_vector((after.orientations[i] * before.orientations[i].inverse()).normalized());
+    const double d = 2.0 * before.radii[i];
+    const double moved = dx.segment<3>(3 * i).norm() / d;
+    a.displacement = std::isfinite(moved) ? std::max(a.displacement, moved) : HUGE_VAL;
+  }
+  // Bond strain change.
+  for (const RodBond& b : before.bonds) {
+    const double l0 = b.rest.rest_length();
+    const double e0 = (before.positions[b.j] - before.positions[b.i]).norm() / l0 - 1.0;
+    const double e1 = (after.positions[b.j] - after.positions[b.i]).norm() / l0 - 1.0;
+    const double change = std::abs(e1 - e0);
+    a.strain_change = std::isfinite(change) ? std::max(a.strain_change, change) : HUGE_VAL;
+  }
+  // Backward-Euler residual: R dy / dt = F_drive + F_ext + F_elastic(y_{n+1}).
+  Eigen::VectorXd resist = Eigen::VectorXd::Zero(6 * n), driving = Eigen::VectorXd::Zero(6 * n);
+  Eigen::VectorXd translational_resist =
+      drag.coupled() ? Eigen::VectorXd(drag.coupled_resistance * dx / dt) : Eigen::VectorXd::Zero(3 * n);
+  for (int i = 0; i < n; ++i) {
+    const double r = before.radii[i];
+    if (!drag.coupled()) translational_resist.segment<3>(3 * i) = drag.resistance[i] * dx.segment<3>(3 * i) / dt;
+    resist.segment<3>(6 * i) = translational_resist.segment<3>(3 * i);
+    resist.segment<3>(6 * i + 3) = drag.rotational_resistance[i] * dphi.segment<3>(3 * i) / dt / r;
+    driving.segment<3>(6 * i) = drag.driving_force[i] + before.external_forces[i];
+    driving.segment<3>(6 * i + 3) = (drag.driving_torque[i] + before.external_torques[i]) / r;
+  }
+  const Eigen::VectorXd loads_before = elastic_loads(before, geometry, walls);
+  const Eigen::VectorXd loads_after = elastic_loads(after, geometry, walls);
+  const double scale = resist.norm() + driving.norm() + loads_before.norm();
+  const double residual = (resist - driving - loads_after).norm();
+  a.residual = scale > 0.0 ? residual / scale : 0.0;
+  if (!std::isfinite(a.residual)) a.residual = HUGE_VAL;
+  // Walls: the new centre, and the path (sampled every quarter radius).
+  if (limits.check_walls && geometry) {
+    for (int i = 0; i < n && a.crossing_sphere < 0; ++i) {
+      const Eigen::Vector3d step = after.positions[i] - before.positions[i];
+      const int samples = std::clamp(static_cast<int>(std::ceil(step.norm() / (0.25 * before.radii[i]))), 1, 64);
+      for (int k = 1; k <= samples; ++k)
+        if (in_wall(before.positions[i] + step * (double(k) / samples), *geometry, walls) &&
+            !in_wall(before.positions[i], *geometry, walls)) {
+          a.crossing_sphere = i;
+          break;
+        }
+    }
+  }
+  // New wall overlap beyond max_overlap radii.
+  if (limits.check_walls && geometry && a.crossing_sphere < 0) {
+    for (int i = 0; i < n; ++i) {
+      auto overlap = [&](const Eigen::Vector3d& p) {
+        double o = before.radii[i] - geometry->signed_distance(p.x(), p.y());
+        if (walls && walls->gap_walls) {
+          o = std::max(o, before.radii[i] - (p.z() - walls->gap_bottom));
+          o = std::max(o, before.radii[i] - (walls->gap_bottom + geometry->gap_height() - p.z()));
+        }
+        return o;
+      };
+      const double grown = overlap(after.positions[i]) - std::max(0.0, overlap(before.positions[i]));
+      if (grown > limits.max_overlap * before.radii[i]) {
+        a.crossing_sphere = i;
+        break;
+      }
+    }
+  }
+  std::ostringstream p;
+  p.precision(3);
+  if (a.displacement > limits.max_displacement)
+    p << "a sphere moves " << a.displacement << " d in one step (limit " << limits.max_displacement << " d)";
+  else if (a.strain_change > limits.max_strain_change)
+    p << "a bond's strain changes by " << a.strain_change << " in one step (limit " << limits.max_strain_change << ")";
+  else if (a.crossing_sphere >= 0)
+    p << "sphere " << a.crossing_sphere << " of the rod would cross or enter a wall (new overlap > "
+      << limits.max_overlap << " radii)";
+  a.problem = p.str();
+  return a;
+}
+
+GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const RodDrag& drag,
+                                   const RodDragEvaluator& drag_at, double dt, const ChannelGeometry* geometry,
+                                   const WallContactParameters* walls, const StepGuardLimits& limits) {
+  if (!(std::isfinite(dt) && dt > 0.0)) {
+    std::ostringstream m;
+    m << "implicit rod step: timestep " << dt << " s must be finite and > 0";
+    throw std::invalid_argument(m.str());
+  }
+  if (limits.max_substeps < 1) throw std::invalid_argument("StepGuardLimits: max_substeps must be >= 1");
+  const int n = rod.size();
+  GuardedStepReport report;
+  OverdampedStepResult& total = report.result;
+  total.velocities.assign(n, Eigen::Vector3d::Zero());
+  total.angular_velocities.assign(n, Eigen::Vector3d::Zero());
+  total.hydrodynamic_forces.assign(n, Eigen::Vector3d::Zero());
+  report.substeps = 0;
+
+  const OverdampedRod start = rod;
+  OverdampedRod current = rod;
+  RodDrag current_drag = drag;
+  double done = 0.0;  // time advanced [s]
+  long level = 1;     // current substep = dt / level
+  while (done < dt * (1.0 - 1e-12)) {
+    const double h = std::min(dt / static_cast<double>(level), dt - done);
+    OverdampedRod trial = current;
+    const OverdampedStepResult r = solver.step(trial, current_drag, h, geometry, walls);
+    StepAssessment a = assess_rod_step(current, trial, r, current_drag, h, geometry, walls, limits);
+    if (a.problem.empty()) {
+      // Step doubling: two steps of h/2 (drag re-evaluated at the midpoint).
+      OverdampedRod half = current;
+      RodDrag half_drag = current_drag;
+      solver.step(half, half_drag, 0.5 * h, geometry, walls);
+      if (drag_at) drag_at(half, half_drag);
+      solver.step(half, half_drag, 0.5 * h, geometry, walls);
+      double difference = 0.0, moved = 0.0;
+      for (int i = 0; i < n; ++i) {
+        difference = std::max(difference, (half.positions[i] - trial.positions[i]).norm());
+        moved = std::max(moved, (trial.positions[i] - current.positions[i]).norm());
+      }
+      // Error floor: 1e-6 d (a relative test otherwise: lags are systematic
+      // and add up); while a sphere touches a wall the Hertz impact
+      // (overlap time scale ~1e-8 s) is a near-discontinuity the step cannot
+      // follow, and the error is bounded by the overlap limit instead.
+      const double d = 2.0 * current.radii[0];
+      bool touching = false;
+      if (geometry && walls) {
+        const std::vector<char> a0 = contact_set(current, geometry, walls), a1 = contact_set(trial, geometry, walls);
+        touching = std::find(a0.begin(), a0.end(), 1) != a0.end() || std::find(a1.begin(), a1.end(), 1) != a1.end();
+      }
+      const double floor = touching ? 0.5 * limits.max_overlap * d : 1e-6 * d * limits.max_step_error;
+      a.step_error = difference / std::max(moved, floor / limits.max_step_error);
+      if (!std::isfinite(a.step_error)) a.step_error = HUGE_VAL;
+      if (a.step_error > limits.max_step_error) {
+        std::ostringstream m;
+        m.precision(3);
+        m << "the linearised step's Newton error (step doubling) is " << a.step_error
+          << " of its displacement (limit " << limits.max_step_error << ")";
+        a.problem = m.str();
+      } else {
+        trial = std::move(half);  // the more accurate of the two
+      }
+    }
+    if (!a.problem.empty()) {
+      if (level * 2 > limits.max_substeps) {
+        std::ostringstream m;
+        m.precision(3);
+        m << "implicit rod step of dt = " << dt << " s refused: even substeps of " << h << " s (dt / "
+          << level << ") fail the accuracy guard at t + " << done << " s: " << a.problem
+          << "; use a smaller timestep";
+        throw StepRefused(m.str());
+      }
+      level *= 2;
+      continue;
+    }
+    for (int i = 0; i < n; ++i) {
+      total.angular_velocities[i] +=
+          rotation_vector((trial.orientations[i] * current.orientations[i].inverse()).normalized()) / dt;
+      total.hydrodynamic_forces[i] += r.hydrodynamic_forces[i] * (h / dt);
+    }
+    total.wall_contact = total.wall_contact || r.wall_contact;
+    total.self_contact = total.self_contact || r.self_contact;
+    total.wall_force += r.wall_force * (h / dt);
+    total.largest_displacement = std::max(total.largest_displacement, r.largest_displacement);
+    report.worst.displacement = std::max(report.worst.displacement, a.displacement);
+    report.worst.strain_change = std::max(report.worst.strain_change, a.strain_change);
+    report.worst.residual = std::max(report.worst.residual, a.residual);
+    report.worst.step_error = std::max(report.worst.step_error, a.step_error);
+    current = std::move(trial);
+    done += h;
+    ++report.substeps;
+    if (done < dt * (1.0 - 1e-12) && drag_at) drag_at(current, current_drag);
+  }
+  for (int i = 0; i < n; ++i) total.velocities[i] = (current.positions[i] - start.positions[i]) / dt;
+  if (report.substeps > 1) {
+    // Displacement over the whole step, as the unguarded step reports it.
+    total.largest_displacement = 0.0;
+    for (int i = 0; i < n; ++i)
+      total.largest_displacement =
+          std::max(total.largest_displacement, (current.positions[i] - start.positions[i]).norm());
+  }
+  rod.positions = std::move(current.positions);
+  rod.orientations = std::move(current.orientations);
+  const auto [strain, energy] = bond_strain_and_energy(rod);
+  report.largest_bond_strain = strain;
+  report.bond_energy = energy;
+  return report;
+}
+
+}  // namespace hsrod

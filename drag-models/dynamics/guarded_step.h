@@ -1,0 +1,93 @@
+// Accuracy guard around the linearly implicit rod step (issue 10, item 3).
+//
+// OverdampedRodSolver::step (overdamped_rod_step.h) is one Newton step of
+// backward Euler: stable for any dt, but it loses accuracy without notice
+// when a step is large (a stiff rod rotating lags: the linearised rotation
+// stretches the bonds it should only turn) and it can carry a sphere through
+// a wall in one step. The guard takes the step on a copy of the rod, checks
+//   - the largest sphere displacement (in diameters),
+//   - the largest change of any bond's axial strain,
+//   - the Newton (linearisation) error of the step, estimated by step
+//     doubling (one step of h against two of h/2): the nonlinear bond and
+//     contact response the single linearised step missed,
+//   - that no sphere centre ends in, or passes through, a wall, and no new
+//     wall overlap exceeds max_overlap radii.
+// (The force residual of backward Euler at the new state is reported too,
+// but is no usable criterion for stiff rods: a rotation by theta stretches
+// the linearised bonds by theta^2 / 2, whose force k_n L0 theta^2 / 2 dwarfs
+// the drag at any practical step although the next step relaxes it.)
+// and accepts it only when all are within the limits; otherwise the step is
+// retried as substeps of half the size (the drag re-evaluated at each
+// substep's start through a callback), down to dt / max_substeps. A step
+// still failing then is refused with StepRefused naming the figures.
+// This wraps the solver; it does not change it.
+#pragma once
+
+#include "dynamics/overdamped_rod_step.h"
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace hsrod {
+
+struct StepGuardLimits {
+  double max_displacement = 0.25;   // largest sphere displacement per (sub)step [sphere diameters]
+  double max_strain_change = 0.01;  // largest change of a bond's axial strain per (sub)step [-]
+  // Newton (linearisation) error of a (sub)step, estimated by step doubling:
+  // the largest difference between one step of h and two of h/2, relative
+  // to the largest displacement of the step; differences below 1e-8 d (below
+  // max_overlap radii while a sphere touches a wall) always pass [-].
+  double max_step_error = 0.01;
+  double max_overlap = 0.1;         // largest new overlap with a wall [sphere radii]
+  int max_substeps = 1024;          // finest substep dt / max_substeps (a power of 2) [-]
+  bool check_walls = true;          // refuse a sphere centre in or through a wall
+};
+
+// Why a (sub)step was or would be rejected; empty when accepted.
+struct StepAssessment {
+  double displacement = 0.0;   // largest |dx| / d [-]
+  double strain_change = 0.0;  // largest |d strain| [-]
+  double residual = 0.0;       // backward-Euler force residual / load scale (reported only) [-]
+  double step_error = 0.0;     // step-doubling error / step displacement [-]
+  int crossing_sphere = -1;    // a sphere whose centre ended in or crossed a wall, or -1
+  std::string problem;         // "" if within the limits
+};
+
+struct GuardedStepReport {
+  OverdampedStepResult result;  // over the whole dt: mean velocities, dt-weighted forces
+  int substeps = 1;             // substeps taken
+  StepAssessment worst;         // largest figures over the accepted substeps
+  double largest_bond_strain = 0.0;  // max |axial strain| after the step [-]
+  double bond_energy = 0.0;          // elastic energy of all bonds after the step [J]
+};
+
+class StepRefused : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Drag of `rod` at its current positions (called at each substep start).
+using RodDragEvaluator = std::function<void(const OverdampedRod& rod, RodDrag& drag)>;
+
+// Advances `rod` by dt [s] under the guard. `drag` is the drag at the
+// current positions; `drag_at` re-evaluates it for substeps (may be empty:
+// the drag is then kept for all substeps). geometry / walls as in
+// OverdampedRodSolver::step. Throws StepRefused (rod unchanged) when even
+// dt / max_substeps fails; std::invalid_argument for a dt that is not
+// finite and positive.
+GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const RodDrag& drag,
+                                   const RodDragEvaluator& drag_at, double dt, const ChannelGeometry* geometry,
+                                   const WallContactParameters* walls, const StepGuardLimits& limits = {});
+
+// The checks of one step from `before` to `after` (result of solver.step
+// with `drag` and dt), without taking it.
+StepAssessment assess_rod_step(const OverdampedRod& before, const OverdampedRod& after,
+                               const OverdampedStepResult& result, const RodDrag& drag, double dt,
+                               const ChannelGeometry* geometry, const WallContactParameters* walls,
+                               const StepGuardLimits& limits);
+
+// Largest |axial strain| and total elastic energy [J] of the rod's bonds.
+std::pair<double, double> bond_strain_and_energy(const OverdampedRod& rod);
+
+}  // namespace hsrod

@@ -1,0 +1,39 @@
+// Bounded work for the dense (non-local) hydrodynamic models (issue 10):
+// level 3 couples every pair of spheres of a rod, so one evaluation holds
+// dense 3n x 3n matrices (the coupling, its factorisation, the resistance and
+// its symmetric part; the implicit step copies the resistance into a dense
+// system and factorises it). A rod of N = 10 000 spheres needs 7.2 GB per
+// matrix: such a request is refused (or a cheaper model chosen) from this
+// prediction, before anything is allocated.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace hsrod {
+
+// Dense 3n x 3n double matrices alive at once in one level-3 evaluation plus
+// the implicit step's dense solve (nonlocal_model.cpp, overdamped_rod_step.cpp).
+inline constexpr int kNonlocalDenseMatrices = 6;
+
+// Predicted peak memory [bytes] of the level-3 model and its implicit step
+// for a rod of `spheres` spheres: kNonlocalDenseMatrices (3n)^2 doubles.
+double nonlocal_model_bytes(long spheres);
+
+// Predicted flops of one level-3 evaluation and step (two dense LU-type
+// factorisations of 3n x 3n: 2 x (2/3)(3n)^3) [-].
+double nonlocal_model_flops(long spheres);
+
+class DenseModelTooLarge : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// True when the level-3 model for `spheres` spheres fits `limit_bytes`.
+bool nonlocal_model_fits(long spheres, double limit_bytes);
+
+// Throws DenseModelTooLarge naming the rod size, the matrix size, the
+// predicted memory, the limit and the alternatives.
+void check_nonlocal_model_budget(long spheres, double limit_bytes);
+
+}  // namespace hsrod

@@ -83,13 +83,15 @@ std::string coefficient_range_problem(const ConfinementCoefficients& c) {
   const double big = 1e6;
   // Walls only add friction: a confined sphere's friction is at least Stokes'.
   check("sphere_friction", c.sphere_friction, 1.0, false, big);
-  // A force-free sphere or rod is carried downstream, at most with the
-  // mid-plane velocity 3/2 of the gap average.
-  check("sphere_driving", c.sphere_driving, 0.0, true, 1.5);
+  // A force-free sphere or rod is carried downstream, physically at most
+  // with the mid-plane velocity 3/2 of the gap average; fitted tables may
+  // exceed that slightly (calibration noise), twice that is nonsense.
+  const double fastest = 3.0;
+  check("sphere_driving", c.sphere_driving, 0.0, true, fastest);
   check("parallel_friction", c.parallel_friction, 0.0, true, big);
   check("perpendicular_friction", c.perpendicular_friction, 0.0, true, big);
-  check("parallel_driving", c.parallel_driving, 0.0, true, 1.5);
-  check("perpendicular_driving", c.perpendicular_driving, 0.0, true, 1.5);
+  check("parallel_driving", c.parallel_driving, 0.0, true, fastest);
+  check("perpendicular_driving", c.perpendicular_driving, 0.0, true, fastest);
   return msg.str();
 }
 

@@ -72,8 +72,8 @@ class ConfinementTable {
 
 // "" if the coefficients are physical, else the first problem: friction
 // coefficients > 0 (sphere_friction >= 1: walls only add friction), driving
-// coefficients in (0, 3/2] (carried downstream, at most at the mid-plane
-// velocity); all finite.
+// coefficients in (0, 3] (carried downstream; physically at most the
+// mid-plane velocity 3/2, with room for fitted values); all finite.
 std::string coefficient_range_problem(const ConfinementCoefficients& c);
 
 // Faxen's series for a sphere midway between two parallel walls moving

@@ -95,9 +95,9 @@ TEST(ConfinementTableStrict, UnphysicalValuesAreRefused) {
   expect_refused("negative_friction", head + "0.1 -1.11 1.49 0.52 0.86 1.49 1.49\n" + kRow2,
                  "sphere_friction = -1.11 outside its physical range [1, ");
   expect_refused("negative_driving", head + "0.1 1.11 1.49 0.52 0.86 -1.49 1.49\n" + kRow2,
-                 "parallel_driving = -1.49 outside its physical range (0, 1.5]");
-  expect_refused("fast_driving", head + "0.1 1.11 1.6 0.52 0.86 1.49 1.49\n" + kRow2,
-                 "sphere_driving = 1.6 outside its physical range (0, 1.5]");
+                 "parallel_driving = -1.49 outside its physical range (0, 3]");
+  expect_refused("fast_driving", head + "0.1 1.11 3.5 0.52 0.86 1.49 1.49\n" + kRow2,
+                 "sphere_driving = 3.5 outside its physical range (0, 3]");
   // The same checks guard tables built in code (calibration fits).
   std::vector<ConfinementTable::Row> rows(2);
   rows[0].beta = 0.1;

@@ -3,6 +3,7 @@
 ------------------------------------------------------------------------- */
 
 #include "fix_rod_bonds.h"
+#include "quaternion_storage.h"
 
 #include "atom.h"
 #include "atom_vec.h"
@@ -33,14 +34,8 @@ using namespace FixConst;
 
 namespace {
 
-Eigen::Quaterniond to_quaternion(const double *q) { return Eigen::Quaterniond(q[0], q[1], q[2], q[3]); }
-
-void store_quaternion(const Eigen::Quaterniond &q, double *out) {
-  out[0] = q.w();
-  out[1] = q.x();
-  out[2] = q.y();
-  out[3] = q.z();
-}
+using hsrod_glue::store_quaternion;
+using hsrod_glue::to_quaternion;
 
 
 

@@ -5,6 +5,7 @@
 ------------------------------------------------------------------------- */
 
 #include "fix_rod_bonds.h"
+#include "quaternion_storage.h"
 
 #include "atom.h"
 #include "memory.h"
@@ -14,14 +15,8 @@
 using namespace LAMMPS_NS;
 
 namespace {
-Eigen::Quaterniond to_quaternion(const double *q) { return Eigen::Quaterniond(q[0], q[1], q[2], q[3]); }
-
-void store_quaternion(const Eigen::Quaterniond &q, double *out) {
-  out[0] = q.w();
-  out[1] = q.x();
-  out[2] = q.y();
-  out[3] = q.z();
-}
+using hsrod_glue::store_quaternion;
+using hsrod_glue::to_quaternion;
 }  // namespace
 
 Eigen::Quaterniond FixRodBonds::orientation(int i) const { return to_quaternion(orientation_[i]); }

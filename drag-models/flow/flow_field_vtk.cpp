@@ -1,4 +1,5 @@
 #include "flow/flow_field_vtk.h"
+#include "common/math_constants.h"
 
 #include "flow/flow_probe.h"
 
@@ -138,7 +139,7 @@ void write_walls_vtp(const std::string& path, const ChannelGeometry& g, double z
   };
   add_quad({g.x_lo(), g.y_lo()}, {g.x_hi(), g.y_lo()}, 0);
   add_quad({g.x_lo(), g.y_hi()}, {g.x_hi(), g.y_hi()}, 0);
-  const double two_pi = 2.0 * std::acos(-1.0);
+  const double two_pi = 2.0 * kPi;
   for (size_t c = 0; c < g.cylinders().size(); ++c) {
     const ZCylinder& cyl = g.cylinders()[c];
     if (!(cyl.radius > 0.0)) continue;

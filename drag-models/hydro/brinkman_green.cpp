@@ -1,11 +1,11 @@
 #include "hydro/brinkman_green.h"
+#include "common/math_constants.h"
 
 #include <cmath>
 
 namespace hsrod {
 
 Eigen::Matrix2d brinkman_green_function(const Eigen::Vector2d& offset, double viscosity, double gap_height) {
-  constexpr double kPi = 3.14159265358979323846;
   const double screening_length = gap_height / std::sqrt(12.0);  // l [m]
   const double r = offset.norm();
   const double R = r / screening_length;

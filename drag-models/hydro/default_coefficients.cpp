@@ -17,6 +17,7 @@
 // orientation anisotropy (a perpendicular rod moves faster, weakly below
 // beta ~ 0.5) as a local closure.
 #include "hydro/confinement_coefficients.h"
+#include "common/math_constants.h"
 #include "hydro/nonlocal_model.h"
 
 #include <Eigen/Dense>
@@ -83,7 +84,7 @@ ConfinementTable ConfinementTable::default_table() {
     const HydrodynamicParameters p{1.0, d / r.beta, d};
     const NonlocalRodModel model(p, spheres);
     const UniformStream stream(p.gap_height);
-    const double zeta = 3.0 * 3.14159265358979323846 * d * r.c.sphere_friction;
+    const double zeta = 3.0 * kPi * d * r.c.sphere_friction;
     const RigidRodResponse along = rigid_rod(model, stream, 10, d, true);
     const RigidRodResponse across = rigid_rod(model, stream, 10, d, false);
     r.c.parallel_friction = along.friction_per_sphere / zeta;

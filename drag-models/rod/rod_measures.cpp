@@ -1,11 +1,12 @@
 #include "rod/rod_measures.h"
+#include "common/math_constants.h"
 
 #include <cmath>
 
 namespace hsrod {
 
 double rod_angle_eq1(const Eigen::Vector2d& end1, const Eigen::Vector2d& end2) {
-  constexpr double pi = 3.14159265358979323846;
+  const double pi = kPi;
   const double dx = end1.x() - end2.x();
   const double dy = end1.y() - end2.y();
   // arctan(|dx|/|dy|) written with atan2 so that dy = 0 gives pi/2.

@@ -1,4 +1,5 @@
 #include "rod/stability_limits.h"
+#include "common/math_constants.h"
 
 #include "rod/rod_linearisation.h"
 
@@ -9,11 +10,6 @@
 #include <cstdio>
 
 namespace hsrod {
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
 
 double SphereMaterial::mass() const { return density * kPi * diameter * diameter * diameter / 6.0; }
 

@@ -15,6 +15,7 @@
 ------------------------------------------------------------------------- */
 
 #include "compute_rod_shape.h"
+#include "common/math_constants.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -170,7 +171,7 @@ void ComputeRodShape::measure() {
       double path = 0.0;
       for (int s = 1; s < nsec; s++) path += (centres[s] - centres[s - 1]).norm();
       const double length = path * nsec / (nsec - 1);
-      out[ANGLE_DEG] = hsrod::rod_angle_eq1(centres.front(), centres.back()) * 180.0 / 3.14159265358979323846;
+      out[ANGLE_DEG] = hsrod::rod_angle_eq1(centres.front(), centres.back()) * 180.0 / hsrod::kPi;
       out[DEFLECTION] = hsrod::relative_deflection_eq2(centres.front(), centres.back(), centres, length);
     }
     out[LATERAL] = (out[COM_Y] - channel_centre_) / channel_width_;

@@ -10,6 +10,7 @@
 ------------------------------------------------------------------------- */
 
 #include "create_rod.h"
+#include "common/math_constants.h"
 
 #include "atom.h"
 #include "atom_vec.h"
@@ -145,7 +146,7 @@ void CreateRod::command(int narg, char **arg) {
   }
   if (spec.spacing < 0.0) error->all(FLERR, "create_rod: spacing must be >= 0 m (0 = one diameter)");
 
-  const double pi = 3.14159265358979323846;
+  const double pi = hsrod::kPi;
   spec.angle = angle_deg * pi / 180.0;
   spec.centre.y() += offset;
   const hsrod::RodLayout layout = hsrod::make_rod_layout(spec);

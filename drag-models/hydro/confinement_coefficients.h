@@ -5,7 +5,8 @@
 // a versioned text file (format below) so that the calibration tools
 // (calibration/) can replace the defaults with coefficients fitted to
 // resolved runs. The defaults (default_table()) come from published
-// correlations, cited at each column in confinement_coefficients.cpp.
+// correlations, cited at each column in default_coefficients.cpp (Faxen's
+// series itself: confinement_coefficients.cpp).
 //
 // File format (version 1), '#' starts a comment:
 //   hsrod-confinement-coefficients 1

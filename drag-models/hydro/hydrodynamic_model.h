@@ -57,15 +57,38 @@ struct HydrodynamicParameters {
   double beta() const { return sphere_diameter / gap_height; }
 };
 
+// What a model keeps between evaluations of the same rods (level 4: each
+// rod's window, factorisation and stored resistance, keyed by
+// RodGeometry::id). Owned by the caller (RodHydrodynamics for the fixes), so
+// that models stay immutable and shareable and the state is in plain sight.
+class ModelState {
+ public:
+  virtual ~ModelState() = default;
+  // One line on the work done through this state, for models that do more
+  // than a fixed amount per call (level 4: window solves); "" for the others.
+  virtual std::string work_summary() const { return ""; }
+};
+
+// A model: immutable once built (every evaluate is const; what changes
+// from call to call lives in a ModelState the caller owns).
 class HydrodynamicModel {
  public:
   virtual ~HydrodynamicModel() = default;
   virtual std::string name() const = 0;
   virtual int level() const = 0;  // rung of the fidelity ladder, 1..4
-  virtual void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const = 0;
-  // One line on the work done so far, for models that do more than a fixed
-  // amount per call (level 4: window solves); "" for the others.
-  virtual std::string work_summary() const { return ""; }
+  // A fresh state for this model's rods; null for models that keep none.
+  virtual std::unique_ptr<ModelState> make_state() const { return nullptr; }
+  // The load on `rod`; `state` (from make_state(); null for models without
+  // one) is read and advanced. A stateful model given null uses a fresh one.
+  virtual void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState* state) const = 0;
+  // The state as plain numbers for restart files, and back (`state` from
+  // make_state(); the flow gives the scene a restored state is rebuilt in).
+  // Models without state save nothing. restore_state throws
+  // std::invalid_argument for data it did not write.
+  virtual std::vector<double> save_state(const ModelState& state) const;
+  virtual void restore_state(ModelState& state, const std::vector<double>& data, const BackgroundFlow& flow) const;
+  // Without kept state (level 4: a full window solve for this call).
+  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const;
 };
 
 // The model registered under `name` (hydro/model_registry.h lists them).

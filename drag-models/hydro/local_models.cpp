@@ -1,5 +1,6 @@
 // Levels 1 and 2 of the ladder: local drag laws, one 3x3 block per sphere.
 #include "hydro/local_models.h"
+#include "common/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +8,6 @@
 namespace hsrod {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-
 Eigen::Vector3d in_plane(const Eigen::Vector2d& u) { return Eigen::Vector3d(u.x(), u.y(), 0.0); }
 
 // Spheres sit at the mid-plane, where the parabolic gap profile is 3/2 of
@@ -38,7 +37,11 @@ void LocalDragBase::add_rotation(const RodGeometry& rod, const BackgroundFlow& f
   }
 }
 
-void IsotropicSphereModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
+void IsotropicSphereModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState*) const {
+  isolated_spheres(rod, flow, out);
+}
+
+void LocalDragBase::isolated_spheres(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
   out.resize(rod.size());
   const double zeta = sphere_friction_;
   const double lambda = coefficients_.sphere_driving;
@@ -50,7 +53,13 @@ void IsotropicSphereModel::evaluate(const RodGeometry& rod, const BackgroundFlow
   add_rotation(rod, flow, out);
 }
 
-void LocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
+void LocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState*) const {
+  // A rod of one section has no tangent: it is the isolated sphere of level 1
+  // (the rod columns of the table are those of a 10-sphere rod).
+  if (rod.sections() < 2) {
+    isolated_spheres(rod, flow, out);
+    return;
+  }
   out.resize(rod.size());
   const auto tangents = rod.section_tangents();
   const ConfinementCoefficients& c = coefficients_;

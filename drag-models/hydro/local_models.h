@@ -15,6 +15,8 @@ class LocalDragBase : public HydrodynamicModel {
   double sphere_friction_;      // zeta = 3 pi mu d * sphere_friction(beta) [N s/m]
   double rotational_friction_;  // pi mu d^3 [N m s]
   void add_rotation(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const;
+  // Level 1's law on every sphere: F_i = zeta (lambda u(x_i) - v_i), with rotation.
+  void isolated_spheres(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const;
   // Obstruction part zeta_o of the sphere friction (levels 3-4): the
   // isolated sphere's force-free velocity lambda u fixes it, zeta_o =
   // zeta lambda / (3/2); the rest, zeta - zeta_o, is film friction with the
@@ -29,7 +31,8 @@ class IsotropicSphereModel : public LocalDragBase {
   using LocalDragBase::LocalDragBase;
   std::string name() const override { return "isotropic"; }
   int level() const override { return 1; }
-  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const override;
+  using HydrodynamicModel::evaluate;
+  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState* state) const override;
 };
 
 // Level 2: confined resistive-force theory along the local tangent.
@@ -38,7 +41,8 @@ class LocalRodModel : public LocalDragBase {
   using LocalDragBase::LocalDragBase;
   std::string name() const override { return "local"; }
   int level() const override { return 2; }
-  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const override;
+  using HydrodynamicModel::evaluate;
+  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState* state) const override;
 };
 
 }  // namespace hsrod

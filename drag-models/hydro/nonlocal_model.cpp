@@ -1,4 +1,5 @@
 #include "hydro/nonlocal_model.h"
+#include "common/math_constants.h"
 
 #include "hydro/brinkman_green.h"
 
@@ -6,17 +7,13 @@
 
 namespace hsrod {
 
-namespace {
-constexpr double kMidplaneFactor = 1.5;  // mid-plane over gap-averaged velocity of the parabolic profile
-}
-
 NonlocalRodModel::NonlocalRodModel(const HydrodynamicParameters& p, const ConfinementTable& table)
     : LocalDragBase(p, table) {
   obstruction_friction_ = LocalDragBase::obstruction_friction();
   film_friction_ = sphere_friction_ - obstruction_friction_;
 }
 
-void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
+void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState*) const {
   const int n = rod.size();
   out.resize(n);
   const double zo = obstruction_friction_;
@@ -32,7 +29,10 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
       coupling.block<2, 2>(3 * i, 3 * k) += kMidplaneFactor * zo * g;
     }
   }
-  const Eigen::MatrixXd obstruction = zo * coupling.inverse();
+  // R_o enters the implicit step as a matrix: one LU of the coupling, its
+  // inverse for R_o and a solve (not a product with the inverse) for the driving.
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(coupling);
+  const Eigen::MatrixXd obstruction = zo * lu.inverse();
   Eigen::MatrixXd resistance = obstruction;
   resistance.diagonal().array() += film_friction_;
   out.coupled_resistance = 0.5 * (resistance + resistance.transpose());
@@ -42,7 +42,7 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
     const Eigen::Vector2d ui = flow.velocity(rod.positions[i].x(), rod.positions[i].y());
     u.segment<3>(3 * i) = Eigen::Vector3d(ui.x(), ui.y(), 0.0);
   }
-  const Eigen::VectorXd driving = kMidplaneFactor * (obstruction * u);
+  const Eigen::VectorXd driving = kMidplaneFactor * zo * lu.solve(u);
   for (int i = 0; i < n; ++i) {
     out.driving_force[i] = driving.segment<3>(3 * i);
     out.resistance[i] = out.coupled_resistance.block<3, 3>(3 * i, 3 * i);

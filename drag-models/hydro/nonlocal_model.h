@@ -27,7 +27,8 @@ class NonlocalRodModel : public LocalDragBase {
   NonlocalRodModel(const HydrodynamicParameters& parameters, const ConfinementTable& table);
   std::string name() const override { return "nonlocal"; }
   int level() const override { return 3; }
-  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const override;
+  using HydrodynamicModel::evaluate;
+  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState* state) const override;
 
   double film_friction() const { return film_friction_; }              // zeta_f [N s/m]
   double obstruction_friction() const { return obstruction_friction_; }  // zeta_o [N s/m]

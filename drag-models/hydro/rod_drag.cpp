@@ -1,5 +1,7 @@
 #include "hydro/hydrodynamic_model.h"
 
+#include <stdexcept>
+
 namespace hsrod {
 
 std::vector<Eigen::Vector3d> RodGeometry::section_tangents() const {
@@ -36,6 +38,17 @@ Eigen::VectorXd RodDrag::forces(const Eigen::VectorXd& velocities) const {
     for (int i = 0; i < n; ++i) f.segment<3>(3 * i) -= resistance[i] * velocities.segment<3>(3 * i);
   }
   return f;
+}
+
+void HydrodynamicModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
+  const std::unique_ptr<ModelState> state = make_state();
+  evaluate(rod, flow, out, state.get());
+}
+
+std::vector<double> HydrodynamicModel::save_state(const ModelState&) const { return {}; }
+
+void HydrodynamicModel::restore_state(ModelState&, const std::vector<double>& data, const BackgroundFlow&) const {
+  if (!data.empty()) throw std::invalid_argument(name() + ": restart data for a model that keeps no state");
 }
 
 }  // namespace hsrod

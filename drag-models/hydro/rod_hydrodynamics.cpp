@@ -74,6 +74,11 @@ const ModelChoiceReport& RodHydrodynamics::choose_model(double d, const std::vec
     report.name = report.automatic_choice.model;
   }
   model_ = make_hydrodynamic_model(report.name, parameters, table, spec_.options.window);
+  state_ = model_->make_state();
+  if (!pending_state_.empty()) {
+    restore_state(std::move(pending_state_));
+    pending_state_.clear();
+  }
   report.level = model_->level();
   report.beta = d / gap;
   report.coefficients_source = table.source();
@@ -83,7 +88,7 @@ const ModelChoiceReport& RodHydrodynamics::choose_model(double d, const std::vec
 
 void RodHydrodynamics::loads(const RodGeometry& rod, RodDrag& out) {
   if (!model_) throw std::logic_error("RodHydrodynamics::loads before choose_model");
-  model_->evaluate(rod, *flow_, out);
+  model_->evaluate(rod, *flow_, out, state_.get());
 }
 
 double RodHydrodynamics::explicit_drag_limit(const RodGeometry& rod, const std::vector<double>& masses) {
@@ -92,6 +97,20 @@ double RodHydrodynamics::explicit_drag_limit(const RodGeometry& rod, const std::
   return hsrod::explicit_drag_limit(rod, drag, masses);
 }
 
-std::string RodHydrodynamics::work_summary() const { return model_ ? model_->work_summary() : ""; }
+std::vector<double> RodHydrodynamics::save_state() const {
+  return state_ ? model_->save_state(*state_) : std::vector<double>{};
+}
+
+void RodHydrodynamics::restore_state(std::vector<double> data) {
+  if (!model_) {
+    pending_state_ = std::move(data);
+    return;
+  }
+  if (data.empty()) return;
+  if (!state_) throw std::invalid_argument("restart data of a model state, but model " + model_->name() + " keeps none");
+  model_->restore_state(*state_, data, *flow_);
+}
+
+std::string RodHydrodynamics::work_summary() const { return state_ ? state_->work_summary() : ""; }
 
 }  // namespace hsrod

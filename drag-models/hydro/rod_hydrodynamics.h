@@ -89,6 +89,8 @@ class RodHydrodynamics {
                                         double bending_stiffness);
   bool has_model() const { return static_cast<bool>(model_); }
   const HydrodynamicModel& model() const { return *model_; }
+  // The state the model keeps for this scene's rods (null for models without).
+  const ModelState* model_state() const { return state_.get(); }
 
   // Loads on this rod: F = driving - R v, torques (hydro/hydrodynamic_model.h).
   // Uses and advances the rod's state (keyed by rod.id) for models that keep one.
@@ -96,6 +98,12 @@ class RodHydrodynamics {
   // Stability limit of integrating this rod's drag explicitly [s]
   // (hydro/explicit_drag_limit.h); masses [kg] per sphere.
   double explicit_drag_limit(const RodGeometry& rod, const std::vector<double>& masses);
+  // Restart: the model's state for this scene's rods as plain numbers
+  // (empty for models without state), and back. Data restored before
+  // choose_model() is kept and applied when the model is built; throws
+  // std::invalid_argument for data of another model.
+  std::vector<double> save_state() const;
+  void restore_state(std::vector<double> data);
   // One line on the work the model did ("" for fixed-cost models).
   std::string work_summary() const;
 
@@ -106,6 +114,8 @@ class RodHydrodynamics {
   std::unique_ptr<ChannelGeometry> geometry_;
   std::unique_ptr<BackgroundFlow> flow_;
   std::unique_ptr<HydrodynamicModel> model_;
+  std::unique_ptr<ModelState> state_;  // the rods' model state (null for models without)
+  std::vector<double> pending_state_;  // restart data waiting for choose_model()
   ModelChoiceReport report_;
 };
 

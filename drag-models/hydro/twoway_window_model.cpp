@@ -1,4 +1,5 @@
 #include "hydro/twoway_window_model.h"
+#include "common/math_constants.h"
 
 #include <Eigen/Cholesky>
 
@@ -12,7 +13,6 @@
 namespace hsrod {
 
 namespace {
-constexpr double kMidplaneFactor = 1.5;  // mid-plane over gap-averaged velocity (parabolic profile)
 
 // Peskin's 4-point regularised delta function (Peskin, Acta Numerica 11, 2002), r in
 // cells: sum_j phi(r - j) = 1, sum_j (r - j) phi(r - j) = 0 and
@@ -118,7 +118,8 @@ bool TwoWayWindowModel::window_clear_of_walls(const WindowLattice& g, const Chan
   return true;
 }
 
-void TwoWayWindowModel::place_window(const RodGeometry& rod, const ChannelGeometry& geometry, RodState& state) const {
+void TwoWayWindowModel::place_window(const RodGeometry& rod, const ChannelGeometry& geometry, RodState& rod_state,
+                                     TwoWayWindowState& state) const {
   Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
   for (const auto& x : rod.positions) {
     lo = lo.cwiseMin(x.head<2>());
@@ -147,21 +148,25 @@ void TwoWayWindowModel::place_window(const RodGeometry& rod, const ChannelGeomet
     throw std::invalid_argument("twoway: window of " + std::to_string(cells) + " cells exceeds the limit of " +
                                 std::to_string(options_.max_window_cells) +
                                 " (coarser grid, smaller margin or shorter rod)");
-  ++stats_.placements;
-  stats_.last_window_cells = static_cast<int>(cells);
+  TwoWayWindowStatistics& stats = state.statistics;
+  ++stats.placements;
+  stats.last_window_cells = static_cast<int>(cells);
   const bool clear = window_clear_of_walls(lattice, geometry);
-  const auto cached = free_windows_.find({lattice.nx, lattice.ny});
-  if (clear && cached != free_windows_.end()) {
+  const auto cached = state.free_windows.find({lattice.nx, lattice.ny});
+  rod_state.placed = lattice;
+  rod_state.translated = clear && cached != state.free_windows.end();
+  if (rod_state.translated) {
     const WindowLattice& g = cached->second->lattice();
-    state.window = std::make_unique<BrinkmanWindow>(cached->second->translated(lattice.x0 - g.x0, lattice.y0 - g.y0));
+    rod_state.window =
+        std::make_unique<BrinkmanWindow>(cached->second->translated(lattice.x0 - g.x0, lattice.y0 - g.y0));
     return;
   }
   const auto start = std::chrono::steady_clock::now();
-  state.window = std::make_unique<BrinkmanWindow>(geometry, lattice, parameters_.viscosity);
-  ++stats_.factorisations;
-  stats_.factorisation_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (clear && !state.window->has_walls())
-    free_windows_[{lattice.nx, lattice.ny}] = std::make_shared<const BrinkmanWindow>(*state.window);
+  rod_state.window = std::make_unique<BrinkmanWindow>(geometry, lattice, parameters_.viscosity);
+  ++stats.factorisations;
+  stats.factorisation_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (clear && !rod_state.window->has_walls())
+    state.free_windows[{lattice.nx, lattice.ny}] = std::make_shared<const BrinkmanWindow>(*rod_state.window);
 }
 
 // The rod still lies in the inner part of its window: at least half the
@@ -184,7 +189,8 @@ bool TwoWayWindowModel::window_holds(const RodGeometry& rod, const ChannelGeomet
 }
 
 // R_o = (I / zeta_o + c (M - m_free I))^-1 from the window's footprint mobility M.
-void TwoWayWindowModel::update_resistance(const RodGeometry& rod, RodState& state) const {
+void TwoWayWindowModel::update_resistance(const RodGeometry& rod, RodState& state,
+                                          TwoWayWindowStatistics& stats) const {
   const BrinkmanWindow& window = *state.window;
   const int n = rod.size();
   std::vector<Footprint> prints;
@@ -197,7 +203,7 @@ void TwoWayWindowModel::update_resistance(const RodGeometry& rod, RodState& stat
         forces(prints[i].nodes[a][k], 2 * i + a) = prints[i].weights[a][k];
   const auto start = std::chrono::steady_clock::now();
   const Eigen::MatrixXd velocity = window.solve(forces);
-  stats_.solve_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.solve_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Eigen::MatrixXd mobility(2 * n, 2 * n);
   for (int i = 0; i < n; ++i)
     for (int a = 0; a < 2; ++a) {
@@ -226,25 +232,140 @@ void TwoWayWindowModel::update_resistance(const RodGeometry& rod, RodState& stat
   state.obstruction = llt.solve(Eigen::MatrixXd::Identity(2 * n, 2 * n));
   state.solved_positions = rod.positions;
   state.evaluations_since_update = 0;
-  ++stats_.updates;
+  ++stats.updates;
 }
 
-std::string TwoWayWindowModel::work_summary() const {
+std::string TwoWayWindowState::work_summary() const {
+  const TwoWayWindowStatistics& s = statistics;
   char line[320];
   std::snprintf(line, sizeof(line),
                 "twoway: %ld evaluations, %ld resistance updates (%.3g s of solves), %ld window placements, "
                 "%ld factorisations (%.3g s), last window %d cells of %.3g m",
-                stats_.evaluations, stats_.updates, stats_.solve_seconds, stats_.placements, stats_.factorisations,
-                stats_.factorisation_seconds, stats_.last_window_cells, spacing_);
+                s.evaluations, s.updates, s.solve_seconds, s.placements, s.factorisations, s.factorisation_seconds,
+                s.last_window_cells, spacing);
   return line;
 }
 
-void TwoWayWindowModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
-  ++stats_.evaluations;
+namespace {
+void put_lattice(std::vector<double>& out, const WindowLattice& g) {
+  out.insert(out.end(), {g.x0, g.y0, g.h, static_cast<double>(g.nx), static_cast<double>(g.ny)});
+}
+
+// Reads the restart data back in order; throws on running past its end.
+struct Reader {
+  const std::vector<double>& data;
+  std::size_t at = 0;
+  double next() {
+    if (at >= data.size()) throw std::invalid_argument("twoway: restart data ends early");
+    return data[at++];
+  }
+  int integer() { return static_cast<int>(next()); }
+  WindowLattice lattice() {
+    WindowLattice g;
+    g.x0 = next();
+    g.y0 = next();
+    g.h = next();
+    g.nx = integer();
+    g.ny = integer();
+    return g;
+  }
+};
+constexpr double kStateTag = 4.0;  // first number: the model level that wrote the data
+}  // namespace
+
+std::vector<double> TwoWayWindowModel::save_state(const ModelState& base) const {
+  const auto& state = dynamic_cast<const TwoWayWindowState&>(base);
+  std::vector<double> out{kStateTag, static_cast<double>(state.free_windows.size())};
+  for (const auto& entry : state.free_windows) put_lattice(out, entry.second->lattice());
+  out.push_back(static_cast<double>(state.rods.size()));
+  for (const auto& entry : state.rods) {
+    const RodState& rod = entry.second;
+    const int n = static_cast<int>(rod.solved_positions.size());
+    out.insert(out.end(), {static_cast<double>(entry.first), rod.window ? 1.0 : 0.0, rod.translated ? 1.0 : 0.0});
+    put_lattice(out, rod.placed);
+    out.insert(out.end(), {static_cast<double>(n), static_cast<double>(rod.evaluations_since_update)});
+    for (const auto& x : rod.solved_positions) out.insert(out.end(), {x.x(), x.y(), x.z()});
+    for (int k = 0; k < rod.obstruction.size(); ++k) out.push_back(rod.obstruction.data()[k]);
+  }
+  const TwoWayWindowStatistics& s = state.statistics;
+  out.insert(out.end(), {static_cast<double>(s.evaluations), static_cast<double>(s.updates),
+                         static_cast<double>(s.placements), static_cast<double>(s.factorisations),
+                         static_cast<double>(s.last_window_cells), s.factorisation_seconds, s.solve_seconds});
+  return out;
+}
+
+void TwoWayWindowModel::restore_state(ModelState& base, const std::vector<double>& data,
+                                      const BackgroundFlow& flow) const {
+  auto& state = dynamic_cast<TwoWayWindowState&>(base);
+  Reader in{data};
+  if (in.next() != kStateTag) throw std::invalid_argument("twoway: restart data from another model");
+  const ChannelGeometry& geometry = flow.geometry();
+  state.rods.clear();
+  state.free_windows.clear();
+  for (int count = in.integer(); count > 0; --count) {
+    const WindowLattice g = in.lattice();
+    state.free_windows[{g.nx, g.ny}] = std::make_shared<const BrinkmanWindow>(geometry, g, parameters_.viscosity);
+  }
+  for (int count = in.integer(); count > 0; --count) {
+    RodState& rod = state.rods[in.integer()];
+    const bool has_window = in.next() != 0.0;
+    rod.translated = in.next() != 0.0;
+    rod.placed = in.lattice();
+    const int n = in.integer();
+    rod.evaluations_since_update = in.integer();
+    rod.solved_positions.resize(n);
+    for (auto& x : rod.solved_positions)
+      for (int a = 0; a < 3; ++a) x[a] = in.next();
+    rod.obstruction.resize(2 * n, 2 * n);
+    for (int k = 0; k < rod.obstruction.size(); ++k) rod.obstruction.data()[k] = in.next();
+    if (!has_window) continue;
+    // Rebuilt as it was built: a translation of the shared wall-free window, or its own factorisation.
+    const auto cached = state.free_windows.find({rod.placed.nx, rod.placed.ny});
+    if (rod.translated && cached != state.free_windows.end()) {
+      const WindowLattice& g = cached->second->lattice();
+      rod.window =
+          std::make_unique<BrinkmanWindow>(cached->second->translated(rod.placed.x0 - g.x0, rod.placed.y0 - g.y0));
+    } else {
+      rod.window = std::make_unique<BrinkmanWindow>(geometry, rod.placed, parameters_.viscosity);
+    }
+  }
+  TwoWayWindowStatistics& s = state.statistics;
+  s.evaluations = static_cast<long>(in.next());
+  s.updates = static_cast<long>(in.next());
+  s.placements = static_cast<long>(in.next());
+  s.factorisations = static_cast<long>(in.next());
+  s.last_window_cells = in.integer();
+  s.factorisation_seconds = in.next();
+  s.solve_seconds = in.next();
+  if (in.at != data.size()) throw std::invalid_argument("twoway: restart data longer than expected");
+}
+
+std::unique_ptr<ModelState> TwoWayWindowModel::make_state() const {
+  auto state = std::make_unique<TwoWayWindowState>();
+  state->spacing = spacing_;
+  return state;
+}
+
+void TwoWayWindowModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out,
+                                 ModelState* state) const {
+  if (!state) {
+    TwoWayWindowState fresh;
+    fresh.spacing = spacing_;
+    evaluate_with(rod, flow, out, fresh);
+    return;
+  }
+  auto* own = dynamic_cast<TwoWayWindowState*>(state);
+  if (!own) throw std::invalid_argument("twoway: the state given is not a level-4 state (make_state())");
+  evaluate_with(rod, flow, out, *own);
+}
+
+void TwoWayWindowModel::evaluate_with(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out,
+                                      TwoWayWindowState& rods) const {
+  ++rods.statistics.evaluations;
   if (std::abs(flow.geometry().gap_height() - parameters_.gap_height) > 1e-9 * parameters_.gap_height)
     throw std::invalid_argument("twoway: the flow's gap height differs from the model's");
   const int n = rod.size();
-  RodState& state = rods_[rod.id];
+  RodState& state = rods.rods[rod.id];
   bool update = !state.window || static_cast<int>(state.solved_positions.size()) != n ||
                 (options_.update_every > 0 && state.evaluations_since_update >= options_.update_every);
   if (!update) {
@@ -264,8 +385,9 @@ void TwoWayWindowModel::evaluate(const RodGeometry& rod, const BackgroundFlow& f
     update = update || !window_holds(rod, flow.geometry(), *state.window);
   }
   if (update) {
-    if (!state.window || !window_holds(rod, flow.geometry(), *state.window)) place_window(rod, flow.geometry(), state);
-    update_resistance(rod, state);
+    if (!state.window || !window_holds(rod, flow.geometry(), *state.window))
+      place_window(rod, flow.geometry(), state, rods);
+    update_resistance(rod, state, rods.statistics);
   } else {
     ++state.evaluations_since_update;
   }

@@ -27,6 +27,10 @@
 // neighbours interact through finite footprints and the walls reflect the
 // disturbance. Out-of-plane (z) motion keeps the isolated friction zeta.
 //
+// State: the model is immutable; each rod's window, factorisation and
+// stored resistance live in a TwoWayWindowState that the caller owns
+// (make_state(); RodHydrodynamics keeps one for the fix's rods).
+//
 // Cost control ("solved every k steps"): the resistance R_o is recomputed
 // only when a sphere has moved more than `update_distance` since the last
 // solve (relative to the rod's centroid when no wall is in the window: the
@@ -59,14 +63,43 @@ struct TwoWayWindowStatistics {
   double solve_seconds = 0.0;          // wall time in the 2n solves of the updates [s]
 };
 
+// Per-rod state of level 4 (owned by the caller, see ModelState): each
+// rod's window, the resistance solved at its last update, and the wall-free
+// windows by size shared between the rods of one state (any wall-free
+// placement of that size is the same system, translated: no new
+// factorisation), with the work counters.
+struct TwoWayWindowState : ModelState {
+  struct Rod {
+    std::unique_ptr<BrinkmanWindow> window;
+    WindowLattice placed;    // the lattice asked for at the last placement
+    bool translated = false; // window = the cached wall-free one of that size, translated
+    std::vector<Eigen::Vector3d> solved_positions;  // at the last update [m]
+    Eigen::MatrixXd obstruction;                    // R_o, in-plane (2n x 2n) [N s/m]
+    int evaluations_since_update = 0;
+  };
+  std::map<int, Rod> rods;  // by RodGeometry::id
+  std::map<std::pair<int, int>, std::shared_ptr<const BrinkmanWindow>> free_windows;  // by (nx, ny)
+  TwoWayWindowStatistics statistics;
+  double spacing = 0.0;  // lattice spacing h of the model [m], for the summary
+  std::string work_summary() const override;
+};
+
 class TwoWayWindowModel : public LocalDragBase {
  public:
   TwoWayWindowModel(const HydrodynamicParameters& parameters, const ConfinementTable& table,
                     const TwoWayWindowOptions& options = {});
   std::string name() const override { return "twoway"; }
   int level() const override { return 4; }
-  // Keeps per-rod state (window, resistance) keyed by RodGeometry::id.
-  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const override;
+  std::unique_ptr<ModelState> make_state() const override;
+  // Restart data: the rods' window placements, stored resistances and
+  // positions at their last update, and the shared wall-free windows' lattices;
+  // restoring re-factorises the same windows, so a restarted run continues
+  // the one it came from to round-off.
+  std::vector<double> save_state(const ModelState& state) const override;
+  void restore_state(ModelState& state, const std::vector<double>& data, const BackgroundFlow& flow) const override;
+  using HydrodynamicModel::evaluate;
+  // `state`: a TwoWayWindowState (null: a fresh one for this call).
+  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState* state) const override;
 
   double film_friction() const { return film_friction_; }  // zeta_f [N s/m]
   double free_self_mobility() const { return free_self_mobility_; }  // m_free [m/(N s)]
@@ -83,26 +116,21 @@ class TwoWayWindowModel : public LocalDragBase {
   // (the screened near field has decayed to e^-4 at 4 l; the Hele-Shaw dipole
   // far field of the rod falls off over its own length).
   double margin_for(double rod_extent) const;
-  const TwoWayWindowStatistics& statistics() const { return stats_; }
-  std::string work_summary() const override;
 
  private:
   struct Footprint {
     std::vector<int> nodes[2];       // window unknowns per component (x, y)
     std::vector<double> weights[2];  // normalised to sum 1
   };
-  struct RodState {
-    std::unique_ptr<BrinkmanWindow> window;
-    std::vector<Eigen::Vector3d> solved_positions;  // at the last update
-    Eigen::MatrixXd obstruction;                    // R_o, in-plane (2n x 2n) [N s/m]
-    int evaluations_since_update = 0;
-  };
+  using RodState = TwoWayWindowState::Rod;
 
+  void evaluate_with(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, TwoWayWindowState& state) const;
   Footprint footprint(const BrinkmanWindow& window, const Eigen::Vector3d& centre) const;
-  void place_window(const RodGeometry& rod, const ChannelGeometry& geometry, RodState& state) const;
+  void place_window(const RodGeometry& rod, const ChannelGeometry& geometry, RodState& rod_state,
+                    TwoWayWindowState& state) const;
   bool window_holds(const RodGeometry& rod, const ChannelGeometry& geometry, const BrinkmanWindow& window) const;
   static bool window_clear_of_walls(const WindowLattice& lattice, const ChannelGeometry& geometry);
-  void update_resistance(const RodGeometry& rod, RodState& state) const;
+  void update_resistance(const RodGeometry& rod, RodState& rod_state, TwoWayWindowStatistics& statistics) const;
   double measure_free_self_mobility() const;
 
   TwoWayWindowOptions options_;
@@ -110,11 +138,24 @@ class TwoWayWindowModel : public LocalDragBase {
   double film_friction_;       // zeta_f [N s/m]
   double obstruction_;         // zeta_o [N s/m]
   double free_self_mobility_;  // m_free [m/(N s)]
-  mutable std::map<int, RodState> rods_;
-  // Wall-free windows by size (nx, ny): any wall-free placement of that size
-  // is the same system, translated (no new factorisation).
-  mutable std::map<std::pair<int, int>, std::shared_ptr<const BrinkmanWindow>> free_windows_;
-  mutable TwoWayWindowStatistics stats_;
+};
+
+// Level 4 with a state of its own, for a caller that holds one model and
+// evaluates its rods through it over time (tests, tools); fix hele_shaw/drag
+// keeps the state in RodHydrodynamics instead.
+class TwoWayWindowSession : public TwoWayWindowModel {
+ public:
+  using TwoWayWindowModel::TwoWayWindowModel;
+  using TwoWayWindowModel::evaluate;
+  // Evaluates with this session's state (not const: the state advances).
+  void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) {
+    TwoWayWindowModel::evaluate(rod, flow, out, &state_);
+  }
+  const TwoWayWindowStatistics& statistics() const { return state_.statistics; }
+  std::string work_summary() const { return state_.work_summary(); }
+
+ private:
+  TwoWayWindowState state_;
 };
 
 }  // namespace hsrod

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <vector>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -61,6 +62,7 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *lmp, int narg, char **arg)
   peratom_flag = 1;
   size_peratom_cols = N_LOAD_COLUMNS;  // total, driving, friction force; torque
   peratom_freq = 1;
+  restart_global = 1;  // the model's per-rod state (level 4 windows), so that a restart continues identically
   grow_arrays(atom->nmax);
   atom->add_callback(0);
   for (int i = 0; i < atom->nlocal; i++) std::fill(hydro_force_[i], hydro_force_[i] + N_LOAD_COLUMNS, 0.0);
@@ -267,4 +269,26 @@ int FixHeleShawDrag::pack_exchange(int i, double *buf) {
 int FixHeleShawDrag::unpack_exchange(int nlocal, double *buf) {
   for (int c = 0; c < N_LOAD_COLUMNS; c++) hydro_force_[nlocal][c] = buf[c];
   return N_LOAD_COLUMNS;
+}
+
+// Global restart data: [count, the facade's model state (count numbers)].
+void FixHeleShawDrag::write_restart(FILE *fp) {
+  if (comm->me != 0) return;
+  std::vector<double> data = hydro_->save_state();
+  data.insert(data.begin(), static_cast<double>(data.size()));
+  const int size = static_cast<int>(data.size() * sizeof(double));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(data.data(), sizeof(double), data.size(), fp);
+}
+
+void FixHeleShawDrag::restart(char *buf) {
+  const double *list = reinterpret_cast<const double *>(buf);
+  const std::size_t n = static_cast<std::size_t>(list[0]);
+  try {
+    hydro_->restore_state(std::vector<double>(list + 1, list + 1 + n));
+  } catch (const std::exception &e) {
+    char msg[512];
+    std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: restart: %s", e.what());
+    error->all(FLERR, msg);
+  }
 }

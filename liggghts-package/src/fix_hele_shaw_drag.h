@@ -46,6 +46,8 @@ class FixHeleShawDrag : public Fix {
   void copy_arrays(int, int, int);
   int pack_exchange(int, double *);
   int unpack_exchange(int, double *);
+  void write_restart(FILE *);
+  void restart(char *);
 
   // The scene's hydrodynamics (geometry, background flow, model, per-rod
   // state); other styles find this fix by ID and use it. The model exists

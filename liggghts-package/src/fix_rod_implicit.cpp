@@ -28,6 +28,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -98,6 +99,7 @@ FixRodImplicit::FixRodImplicit(LAMMPS *lmp, int narg, char **arg)
   size_vector = 3;  // [1] largest displacement per step / d, [2] wall force [N], [3] rods touching walls
   extvector = 0;
   global_freq = 1;
+  restart_global = 1;  // the rods' wall-contact records
 }
 
 int FixRodImplicit::setmask() { return INITIAL_INTEGRATE; }
@@ -213,4 +215,32 @@ double FixRodImplicit::compute_vector(int n) {
   if (n == 0) return largest_displacement_;
   if (n == 1) return wall_force_;
   return contacts_;
+}
+
+// Global restart data: [count, then per rod: molecule, touching, ever touched, wall force, largest wall force].
+void FixRodImplicit::write_restart(FILE *fp) {
+  if (comm->me != 0) return;
+  std::vector<double> data{static_cast<double>(contacts_by_rod_.size())};
+  for (const auto &entry : contacts_by_rod_) {
+    const RodContactRecord &r = entry.second;
+    data.insert(data.end(), {static_cast<double>(entry.first), r.touching ? 1.0 : 0.0, r.ever_touched ? 1.0 : 0.0,
+                             r.wall_force, r.largest_wall_force});
+  }
+  const int size = static_cast<int>(data.size() * sizeof(double));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(data.data(), sizeof(double), data.size(), fp);
+}
+
+void FixRodImplicit::restart(char *buf) {
+  const double *list = reinterpret_cast<const double *>(buf);
+  const int rods = static_cast<int>(list[0]);
+  contacts_by_rod_.clear();
+  for (int k = 0; k < rods; k++) {
+    const double *r = list + 1 + 5 * k;
+    RodContactRecord &record = contacts_by_rod_[static_cast<int>(r[0])];
+    record.touching = r[1] != 0.0;
+    record.ever_touched = r[2] != 0.0;
+    record.wall_force = r[3];
+    record.largest_wall_force = r[4];
+  }
 }

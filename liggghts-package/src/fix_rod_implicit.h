@@ -45,6 +45,8 @@ class FixRodImplicit : public Fix {
   void setup(int);
   void initial_integrate(int);
   double compute_vector(int);
+  void write_restart(FILE *);
+  void restart(char *);
 
  private:
   class FixRodBonds *bonds_;
@@ -59,7 +61,9 @@ class FixRodImplicit : public Fix {
   bool warned_;
   std::map<int, RodContactRecord> contacts_by_rod_;
   // Per rod (molecule ID): the step's workspace and LU analysis, kept
-  // between steps so a long rod is not re-analysed every step.
+  // between steps so a long rod is not re-analysed every step. Not in
+  // restart files: a fresh workspace gives the same step (tested), while
+  // the contact records above are written (write_restart).
   std::map<int, hsrod::OverdampedRodSolver> solvers_by_rod_;
   bool reported_;                // set-up report printed once, not per run
 };

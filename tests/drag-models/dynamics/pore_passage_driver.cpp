@@ -9,6 +9,7 @@
 #include "rod/rod_measures.h"
 
 #include <cmath>
+#include <memory>
 
 namespace hsrod_test {
 
@@ -60,10 +61,13 @@ std::vector<PassageSample> run_pore_passage(const PassageCase& c, const std::str
   rod_geometry.sphere_diameter = kD;
   hsrod::RodDrag drag;
   hsrod::OverdampedRodSolver solver;
+  // The model's state kept across steps, as fix hele_shaw/drag keeps it (RodHydrodynamics): level 4
+  // re-solves its window only when the rod has moved (update_distance), not on every evaluation.
+  const std::unique_ptr<hsrod::ModelState> model_state = model->make_state();
   std::vector<PassageSample> samples{sample(0, rod)};
   for (int step = 1; step <= c.steps; ++step) {
     rod_geometry.positions = rod.positions;
-    model->evaluate(rod_geometry, *flow, drag);
+    model->evaluate(rod_geometry, *flow, drag, model_state.get());
     solver.step(rod, drag, c.dt, &geometry, &walls);
     if (step % c.sample_every == 0 || step == c.steps) samples.push_back(sample(step, rod));
   }

@@ -99,8 +99,8 @@ TEST(BrinkmanWindow, DisturbanceMatchesBrinkmanGreenFunction) {
 }
 
 namespace {
-std::unique_ptr<TwoWayWindowModel> level4(double beta, TwoWayWindowOptions options = {}) {
-  return std::make_unique<TwoWayWindowModel>(HydrodynamicParameters{kMu, kD / beta, kD},
+std::unique_ptr<TwoWayWindowSession> level4(double beta, TwoWayWindowOptions options = {}) {
+  return std::make_unique<TwoWayWindowSession>(HydrodynamicParameters{kMu, kD / beta, kD},
                                              ConfinementTable::default_table(), options);
 }
 }  // namespace

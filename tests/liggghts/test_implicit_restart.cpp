@@ -1,0 +1,81 @@
+// Restarts of the implicit reduced model: a run split by write_restart /
+// read_restart continues the unbroken run. What must survive: the bonds'
+// rest states and orientations (fix rod/bonds, per atom), the level-4
+// windows and stored resistances (fix hele_shaw/drag's global restart data,
+// RodHydrodynamics::save_state) and the wall-contact records (fix
+// rod/implicit); the implicit step's per-rod workspace is rebuilt, which
+// must not change the step.
+#include "liggghts_session.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+using hsrod_test::LiggghtsSession;
+
+namespace {
+
+constexpr double kD = 3e-6;  // [m]
+
+std::string drag_fix(const std::string &model) {
+  return "fix drag all hele_shaw/drag channel 600e-6 200e-6 20e-6 origin 0 0 0 pore 85e-6 300e-6 viscosity 1e-3 "
+         "fluid_density 1170 reynolds 2 model " + model;
+}
+
+void define_fixes(LiggghtsSession &s, const std::string &model) {
+  s.commands({"fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3 damping 0.1 timestep_check no",
+              drag_fix(model), "fix step all rod/implicit bonds bonds drag drag"});
+}
+
+void start_pore_run(LiggghtsSession &s, const std::string &model) {
+  setenv("HSROD_CACHE_DIR", HSROD_TEST_CACHE_DIR, 1);
+  s.commands({"units si", "atom_style hybrid granular molecular", "atom_modify map array sort 0 0",
+              "boundary f f f", "newton off", "communicate single cutoff 1e-5 vel yes",
+              "region box block 0 600e-6 0 200e-6 0 20e-6 units box", "create_box 1 box",
+              "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 150e-6 100e-6 10e-6 angle 10"});
+  define_fixes(s, model);
+  s.commands({"timestep 4e-6", "run 40"});
+}
+
+// Largest distance between the sphere centres of the unbroken run and of
+// the run restarted after 40 of its 80 steps [m].
+double restart_difference(const std::string &model) {
+  const auto dir = std::filesystem::temp_directory_path() / "hsrod_implicit_restart_test";
+  std::filesystem::create_directories(dir);
+  const std::string file = (dir / "rod.restart").string();
+  LiggghtsSession straight;
+  start_pore_run(straight, model);
+  straight.command("run 40");
+  const auto expected = straight.gather("x");
+  {
+    LiggghtsSession first;
+    start_pore_run(first, model);
+    first.command("write_restart " + file);
+  }
+  LiggghtsSession second;
+  second.commands({"atom_style hybrid granular molecular", "atom_modify map array sort 0 0",
+                   "communicate single cutoff 1e-5 vel yes", "read_restart " + file});
+  define_fixes(second, model);
+  second.commands({"timestep 4e-6", "run 40"});  // LIGGGHTS 3.8 does not restore the timestep
+  const auto restarted = second.gather("x");
+  double worst = 0.0;
+  for (size_t i = 0; i < expected.size(); i++) worst = std::max(worst, (restarted[i] - expected[i]).norm());
+  return worst;
+}
+
+}  // namespace
+
+TEST(ImplicitRestart, LevelTwoRunContinuesIdentically) {
+  const double worst = restart_difference("local");
+  std::printf("level 2 restart: largest position difference %.3g m\n", worst);
+  EXPECT_LT(worst, 1e-12 * kD);
+}
+
+TEST(ImplicitRestart, LevelFourRunContinuesIdenticallyWithItsWindowsRestored) {
+  const double worst = restart_difference("twoway window_cells 2");
+  std::printf("level 4 restart: largest position difference %.3g m\n", worst);
+  EXPECT_LT(worst, 1e-12 * kD);
+}

@@ -1,6 +1,5 @@
 // hsrod calibration: confinement coefficient fit (see confinement_fit.h).
 #include "confinement_fit.h"
-#include "common/math_constants.h"
 
 #include <Eigen/Dense>
 
@@ -14,6 +13,7 @@
 namespace hsrod::calib {
 
 namespace {
+constexpr double kPi = 3.14159265358979323846;
 
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> out;

@@ -1,6 +1,5 @@
 // hsrod calibration: momentum exchange of coupled runs (see momentum_exchange.h).
 #include "momentum_exchange.h"
-#include "common/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,10 @@
 #include <utility>
 
 namespace hsrod::calib {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
 
 namespace {
 // roots of z^2 - A z + B = 0 of the recurrence (momentum_exchange.h)

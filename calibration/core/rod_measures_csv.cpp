@@ -1,6 +1,5 @@
 // hsrod calibration: rod measures as CSV (see rod_measures_csv.h).
 #include "rod_measures_csv.h"
-#include "common/math_constants.h"
 
 #include <algorithm>
 #include <map>
@@ -51,7 +50,7 @@ std::vector<RodMeasures> measure_rods(const std::vector<Sphere>& spheres, const 
       double path = 0.0;  // L_Rod = N d: N x mean centre distance
       for (int i = 1; i < nsec; ++i) path += (centres[i] - centres[i - 1]).norm();
       const double length = path * nsec / (nsec - 1);
-      m.angle_deg = hsrod::rod_angle_eq1(centres.front(), centres.back()) * 180.0 / hsrod::kPi;
+      m.angle_deg = hsrod::rod_angle_eq1(centres.front(), centres.back()) * 180.0 / 3.14159265358979323846;
       m.deflection = hsrod::relative_deflection_eq2(centres.front(), centres.back(), centres, length);
     }
     m.lateral = (m.com[1] - s.channel_centre) / s.channel_width;

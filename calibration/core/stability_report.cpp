@@ -1,6 +1,5 @@
 // hsrod calibration: stability and cost report (see stability_report.h).
 #include "stability_report.h"
-#include "common/math_constants.h"
 
 #include "momentum_exchange.h"
 
@@ -86,7 +85,7 @@ Report make_report(const RunParameters& p) {
     }
     if (p.coupled && r.tau_p > 0 && p.h_sphere > 0 && p.d_min > 0) {
       // per sphere of the smallest diameter (momentum_exchange.h)
-      const double pi = hsrod::kPi;
+      const double pi = 3.14159265358979323846;
       const double mu = p.rho_f * p.nu;
       const double vol = pi * p.d_min * p.d_min * p.d_min / 6.0;
       const double mass = p.rho_p * vol, mf = p.rho_f * vol;

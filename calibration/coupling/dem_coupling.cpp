@@ -1,7 +1,6 @@
 // hsrod calibration: DEM side of the coupling (see dem_coupling.h).
 // LIGGGHTS code only: no OpenFOAM header may be included here.
 #include "dem_coupling.h"
-#include "common/math_constants.h"
 
 #include <mpi.h>
 
@@ -34,6 +33,10 @@ struct DemCoupling::Impl {
   double **f = nullptr, **t = nullptr;
   double **ksl = nullptr, **uf = nullptr, **krot = nullptr;
 };
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
 
 bool DemCoupling::has_package_styles() {
 #ifdef HSROD_DEM_WITH_PACKAGE

@@ -92,14 +92,14 @@ TwoWayWindowModel::Footprint TwoWayWindowModel::footprint(const BrinkmanWindow& 
     double total = 0.0;
     for (int k : window.nodes_near(c, 2.0 * std::sqrt(2.0) * w, a)) {
       const Eigen::Vector2d r = (window.nodes()[k].position - c) / w;
-      const double w = peskin_kernel(r.x()) * peskin_kernel(r.y());
-      if (w <= 0.0) continue;
+      const double weight = peskin_kernel(r.x()) * peskin_kernel(r.y());
+      if (weight <= 0.0) continue;
       f.nodes[a].push_back(k);
-      f.weights[a].push_back(w);
-      total += w;
+      f.weights[a].push_back(weight);
+      total += weight;
     }
     // Near a wall some nodes are missing: the force stays on the fluid ones.
-    for (double& w : f.weights[a]) w /= total;
+    for (double& weight : f.weights[a]) weight /= total;
   }
   return f;
 }

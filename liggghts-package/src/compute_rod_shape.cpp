@@ -44,8 +44,8 @@
 using namespace LAMMPS_NS;
 
 
-ComputeRodShape::ComputeRodShape(LAMMPS *lmp, int &iarg, int narg, char **arg)
-    : Compute(lmp, iarg, narg, arg),
+ComputeRodShape::ComputeRodShape(LAMMPS *instance, int &iarg, int narg, char **arg)
+    : Compute(instance, iarg, narg, arg),
       mean_velocity_(0.0),
       section_size_(1),
       contacts_(nullptr),

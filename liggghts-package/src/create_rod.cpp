@@ -37,7 +37,7 @@
 using namespace LAMMPS_NS;
 
 
-CreateRod::CreateRod(LAMMPS *lmp) : Pointers(lmp) {}
+CreateRod::CreateRod(LAMMPS *instance) : Pointers(instance) {}
 
 void CreateRod::command(int narg, char **arg) {
   if (domain->box_exist == 0) error->all(FLERR, "create_rod command before simulation box is defined");

@@ -13,8 +13,8 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-FixCfdTorqueImplicit::FixCfdTorqueImplicit(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg), krot_(nullptr) {
+FixCfdTorqueImplicit::FixCfdTorqueImplicit(LAMMPS *instance, int narg, char **arg)
+    : Fix(instance, narg, arg), krot_(nullptr) {
   if (narg != 3) error->all(FLERR, "Illegal fix couple/cfd/torque/implicit command: no arguments");
   if (!atom->omega_flag || !atom->torque_flag)
     error->all(FLERR, "fix couple/cfd/torque/implicit needs atoms with omega and torque (atom_style granular)");

@@ -30,8 +30,8 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-FixHeleShawDrag::FixHeleShawDrag(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg),
+FixHeleShawDrag::FixHeleShawDrag(LAMMPS *instance, int narg, char **arg)
+    : Fix(instance, narg, arg),
       applied_by_integrator_(false),
       hydro_force_(nullptr),
       force_flag_(0),

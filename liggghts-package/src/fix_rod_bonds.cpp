@@ -43,8 +43,8 @@ using hsrod_glue::to_quaternion;
 
 /* ---------------------------------------------------------------------- */
 
-FixRodBonds::FixRodBonds(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg),
+FixRodBonds::FixRodBonds(LAMMPS *instance, int narg, char **arg)
+    : Fix(instance, narg, arg),
       timestep_check_(true),
       exclude_pairs_(true),
       orientation_(nullptr),

@@ -34,8 +34,8 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-FixRodImplicit::FixRodImplicit(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg),
+FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
+    : Fix(instance, narg, arg),
       bonds_(nullptr),
       drag_(nullptr),
       walls_(true),

@@ -40,7 +40,7 @@ std::vector<T> allgather_all(MPI_Comm world, int nprocs, const std::vector<T> &m
 
 class RodGather : protected Pointers {
  public:
-  explicit RodGather(class LAMMPS *lmp) : Pointers(lmp) {}
+  explicit RodGather(class LAMMPS *instance) : Pointers(instance) {}
   // Gathers the group's spheres; `bonds` (may be null; fix rod/bonds) adds
   // orientations and bond rest states. Rods are keyed by molecule ID,
   // spheres sorted by tag.

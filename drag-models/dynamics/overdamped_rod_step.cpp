@@ -1,5 +1,8 @@
 #include "dynamics/overdamped_rod_step.h"
 
+#include "dynamics/small_block_lu.h"
+
+#include "rod/beam_bond_jacobian.h"
 #include "rod/rod_linearisation.h"
 
 #include <Eigen/Dense>
@@ -7,10 +10,12 @@
 #include <Eigen/SparseLU>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <tuple>
+#include <type_traits>
 
 namespace hsrod {
 
@@ -73,57 +78,145 @@ OverdampedRod make_overdamped_rod(const RodLayout& layout, const BeamBondMateria
   return rod;
 }
 
-std::vector<std::pair<int, int>> nearby_sphere_pairs(const std::vector<Eigen::Vector3d>& positions, double reach) {
-  std::vector<std::pair<int, int>> pairs;
+namespace {
+
+struct Cell {
+  std::int64_t cx, cy;
+  int sphere;
+};
+
+bool cell_order(const Cell& a, const Cell& b) { return std::tie(a.cx, a.cy, a.sphere) < std::tie(b.cx, b.cy, b.sphere); }
+
+// Sorts cells that were sorted at the previous step and have moved a
+// little since (few entries out of place): insertion sort, O(n) then; falls
+// back to std::sort when the order has changed much.
+void resort_cells(std::vector<Cell>& cells) {
+  long moves = 0;
+  const long budget = 8L * static_cast<long>(cells.size()) + 64;
+  for (std::size_t k = 1; k < cells.size(); ++k) {
+    const Cell c = cells[k];
+    std::size_t m = k;
+    for (; m > 0 && cell_order(c, cells[m - 1]); --m) cells[m] = cells[m - 1];
+    cells[m] = c;
+    moves += static_cast<long>(k - m);
+    if (moves > budget) {
+      std::sort(cells.begin(), cells.end(), cell_order);
+      return;
+    }
+  }
+}
+
+// nearby_sphere_pairs with its cell buffer passed in (kept by a solver:
+// `cells` from the previous call of the same rod are re-sorted, not sorted
+// anew). With sort_pairs false the pairs come in cell order.
+void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double reach, std::vector<Cell>& cells,
+                       std::vector<std::pair<int, int>>& pairs, bool sort_pairs) {
+  pairs.clear();
   const int n = static_cast<int>(positions.size());
-  if (n < 2 || !(reach > 0.0)) return pairs;
+  if (n < 2 || !(reach > 0.0)) {
+    cells.clear();
+    return;
+  }
   // Cells of side `reach` in the plane: a pair within reach in x and y lies
   // in the same or a neighbouring cell. The gap holds only a few spheres
   // across z, so cells stay nearly empty and the search is O(n log n).
   double x_min = std::numeric_limits<double>::infinity(), y_min = x_min;
+  bool all_finite = true;
   for (const auto& p : positions) {
-    if (!p.allFinite()) continue;
+    if (!p.allFinite()) {
+      all_finite = false;
+      continue;
+    }
     x_min = std::min(x_min, p.x());
     y_min = std::min(y_min, p.y());
   }
-  struct Cell {
-    std::int64_t cx, cy;
-    int sphere;
+  const auto cell_of = [&](int i) {
+    return Cell{static_cast<std::int64_t>(std::floor((positions[i].x() - x_min) / reach)),
+                static_cast<std::int64_t>(std::floor((positions[i].y() - y_min) / reach)), i};
   };
-  const auto cell_order = [](const Cell& a, const Cell& b) {
-    return std::tie(a.cx, a.cy, a.sphere) < std::tie(b.cx, b.cy, b.sphere);
-  };
-  std::vector<Cell> cells;
-  cells.reserve(n);
-  for (int i = 0; i < n; ++i) {
+  if (all_finite && static_cast<int>(cells.size()) == n) {
+    for (Cell& c : cells) c = cell_of(c.sphere);
+    resort_cells(cells);
+  } else {
+    cells.clear();
     // A non-finite sphere has already spoilt the step; it has no neighbours.
-    if (!positions[i].allFinite()) continue;
-    cells.push_back({static_cast<std::int64_t>(std::floor((positions[i].x() - x_min) / reach)),
-                     static_cast<std::int64_t>(std::floor((positions[i].y() - y_min) / reach)), i});
+    for (int i = 0; i < n; ++i)
+      if (positions[i].allFinite()) cells.push_back(cell_of(i));
+    std::sort(cells.begin(), cells.end(), cell_order);
   }
-  std::sort(cells.begin(), cells.end(), cell_order);
   for (const Cell& c : cells) {
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        const Cell first{c.cx + dx, c.cy + dy, -1};
-        for (auto it = std::lower_bound(cells.begin(), cells.end(), first, cell_order);
-             it != cells.end() && it->cx == first.cx && it->cy == first.cy; ++it) {
-          if (it->sphere <= c.sphere) continue;
-          const Eigen::Vector3d offset = positions[c.sphere] - positions[it->sphere];
-          if (std::fabs(offset.x()) > reach || std::fabs(offset.y()) > reach) continue;
-          pairs.emplace_back(c.sphere, it->sphere);
-        }
+    // Cells (cx + dx, cy - 1 .. cy + 1) are contiguous in the sorted list.
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      const Cell first{c.cx + dx, c.cy - 1, -1};
+      for (auto it = std::lower_bound(cells.begin(), cells.end(), first, cell_order);
+           it != cells.end() && it->cx == first.cx && it->cy <= c.cy + 1; ++it) {
+        if (it->sphere <= c.sphere) continue;
+        const Eigen::Vector3d offset = positions[c.sphere] - positions[it->sphere];
+        if (std::fabs(offset.x()) > reach || std::fabs(offset.y()) > reach) continue;
+        pairs.emplace_back(c.sphere, it->sphere);
       }
+    }
   }
-  // The order the contacts are summed in is then independent of the cells.
-  std::sort(pairs.begin(), pairs.end());
+  if (sort_pairs) std::sort(pairs.begin(), pairs.end());
+}
+
+}  // namespace
+
+std::vector<std::pair<int, int>> nearby_sphere_pairs(const std::vector<Eigen::Vector3d>& positions, double reach) {
+  std::vector<Cell> cells;
+  std::vector<std::pair<int, int>> pairs;
+  find_nearby_pairs(positions, reach, cells, pairs, true);
   return pairs;
 }
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_between(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+struct SphereWallContact {
+  int sphere;
+  Eigen::Vector3d force;      // [N]
+  Eigen::Matrix3d stiffness;  // [N/m]
+  bool rubbing;               // wall friction acts (friction below is set)
+  Matrix6d friction;          // secant resistance c G^T G about the previous velocities [N s/m, N s, N m s]
+};
+
+struct SpherePairContact {
+  int i, j;
+  Eigen::Vector3d force_on_i;  // [N]
+  Eigen::Matrix3d stiffness;   // -dF_i/dx_i [N/m]
+};
+
+}  // namespace
+
 struct OverdampedRodSolver::Workspace {
+  // Structure, analysed when the rod's size or bonds change.
+  int analysed_spheres = -1;
+  std::vector<std::pair<int, int>> analysed_bonds;
+  bool chain = false;                        // every bond joins spheres k and k+1
+  std::vector<int> partner_start, partners;  // bonded partners of each sphere (CSR)
+
+  // Per step, sized once.
+  std::vector<BondLoads> bond_loads;
+  std::vector<BondJacobian> bond_jacobians;
+  std::vector<SphereWallContact> wall_contacts;
+  std::vector<SpherePairContact> pair_contacts;
+  std::vector<std::pair<int, int>> candidates;
+  std::vector<Cell> cells;
+  Eigen::VectorXd rhs, dy;  // loads [N, N m], then displacements [m, rad]
+  Eigen::VectorXd velocities, hydrodynamic;  // 3n work vectors for the coupled drag
+  std::vector<Vector6d> previous_velocities;  // (v, omega) of the last step, where wall friction is linearised
+
+  // Block-tridiagonal storage: diagonal[k] = A(k, k), upper[k] = A(k, k+1),
+  // lower[k] = A(k, k-1) (6x6 blocks).
+  std::vector<Matrix6d> diagonal, upper, lower;
+
+  // General couplings.
   std::vector<Eigen::Triplet<double>> triplets;
-  std::vector<SphereState> state;
-  Eigen::VectorXd rhs;  // loads [N, N m]
   Eigen::SparseMatrix<double> matrix;
   // Spheres are numbered along the rod, so without non-local drag the matrix
   // is banded (bonds couple neighbouring sections only; a self-contact adds
@@ -131,28 +224,173 @@ struct OverdampedRodSolver::Workspace {
   // the band, O(n).
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu;
   std::vector<int> analysed_outer, analysed_inner;  // pattern `lu` was analysed for
-  std::vector<Vector6d> previous_velocities;
-  std::vector<std::pair<int, Matrix6d>> frictions;  // this step's friction resistance per rubbing sphere  // (v, omega) of the last step, where wall friction is linearised
-  int analyses = 0;
+  Eigen::MatrixXd dense;
+  Eigen::PartialPivLU<Eigen::MatrixXd> dense_lu;
 
-  // Factorises `matrix`, analysing its pattern only when it changed.
-  void factorize() {
-    const int outer_size = static_cast<int>(matrix.outerSize()) + 1;
-    const int nonzeros = static_cast<int>(matrix.nonZeros());
-    const bool same_pattern =
-        analyses > 0 && static_cast<int>(analysed_outer.size()) == outer_size &&
-        static_cast<int>(analysed_inner.size()) == nonzeros &&
-        std::equal(analysed_outer.begin(), analysed_outer.end(), matrix.outerIndexPtr()) &&
-        std::equal(analysed_inner.begin(), analysed_inner.end(), matrix.innerIndexPtr());
-    if (!same_pattern) {
-      lu.analyzePattern(matrix);
-      analysed_outer.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + outer_size);
-      analysed_inner.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + nonzeros);
-      ++analyses;
-    }
-    lu.factorize(matrix);
+  int analyses = 0;
+  OverdampedSolverStatistics statistics;
+
+  void analyse_structure(const OverdampedRod& rod);
+  void find_contacts(const OverdampedRod& rod, const ChannelGeometry* geometry, const WallContactParameters* walls,
+                     OverdampedStepResult& result);
+  bool bonded(int i, int j) const {
+    return std::find(partners.begin() + partner_start[i], partners.begin() + partner_start[i + 1], j) !=
+           partners.begin() + partner_start[i + 1];
   }
+  template <typename Add>
+  void add_couplings(const OverdampedRod& rod, const RodDrag& drag, double dt, Add add) const;
+  void solve_banded(int n);
+  void factorize_sparse();
 };
+
+void OverdampedRodSolver::Workspace::analyse_structure(const OverdampedRod& rod) {
+  const int n = rod.size();
+  bool same = n == analysed_spheres && rod.bonds.size() == analysed_bonds.size();
+  for (std::size_t k = 0; same && k < rod.bonds.size(); ++k)
+    same = rod.bonds[k].i == analysed_bonds[k].first && rod.bonds[k].j == analysed_bonds[k].second;
+  if (same) return;
+  analysed_spheres = n;
+  analysed_bonds.clear();
+  chain = true;
+  std::vector<int> count(n + 1, 0);
+  for (const RodBond& b : rod.bonds) {
+    analysed_bonds.emplace_back(b.i, b.j);
+    if (std::abs(b.i - b.j) != 1) chain = false;
+    ++count[b.i + 1];
+    ++count[b.j + 1];
+  }
+  for (int k = 0; k < n; ++k) count[k + 1] += count[k];
+  partner_start = count;
+  partners.assign(count[n], 0);
+  for (const RodBond& b : rod.bonds) {
+    partners[count[b.i]++] = b.j;
+    partners[count[b.j]++] = b.i;
+  }
+  bond_loads.resize(rod.bonds.size());
+  bond_jacobians.resize(rod.bonds.size());
+  diagonal.resize(n);
+  upper.resize(n);
+  lower.resize(n);
+  if (chain) ++analyses;  // the band; the sparse path counts its own analyses
+}
+
+void OverdampedRodSolver::Workspace::find_contacts(const OverdampedRod& rod, const ChannelGeometry* geometry,
+                                                   const WallContactParameters* walls, OverdampedStepResult& result) {
+  wall_contacts.clear();
+  pair_contacts.clear();
+  const int n = rod.size();
+  if (geometry && walls) {
+    for (int i = 0; i < n; ++i) {
+      const WallContact c = wall_contact(*geometry, *walls, rod.positions[i], rod.radii[i]);
+      if (!c.touching) continue;
+      result.wall_contact = true;
+      result.wall_force += c.force.norm();
+      SphereWallContact contact{i, c.force, c.stiffness, false, Matrix6d::Zero()};
+      // Wall friction: secant resistance about the previous velocities,
+      // c G^T G (dynamics/wall_contact.h), on the sphere's own 6x6 block.
+      if (walls->friction_coefficient > 0.0) {
+        Vector6d u0 = previous_velocities[i];
+        if (static_cast<int>(rod.velocities.size()) == n) {
+          u0.head<3>() = rod.velocities[i];
+          u0.tail<3>() = static_cast<int>(rod.angular_velocities.size()) == n ? rod.angular_velocities[i]
+                                                                               : Eigen::Vector3d::Zero();
+        }
+        contact.rubbing = true;
+        for (int k = 0; k < c.points; ++k)
+          contact.friction += wall_friction_resistance(c.point[k], rod.radii[i], walls->friction_coefficient,
+                                                       walls->slip_velocity, u0);
+      }
+      wall_contacts.push_back(contact);
+    }
+  }
+  // Non-bonded spheres of the rod touching each other (a folding rod).
+  if (walls && walls->self_contact && n > 2) {
+    double largest_radius = 0.0;
+    for (double r : rod.radii) largest_radius = std::max(largest_radius, r);
+    find_nearby_pairs(rod.positions, 2.0 * largest_radius, cells, candidates, false);
+    for (const auto& pair : candidates) {
+      const int i = pair.first, j = pair.second;
+      if (bonded(i, j)) continue;
+      const WallContact c = sphere_contact(*walls, rod.positions[i], rod.radii[i], rod.positions[j], rod.radii[j]);
+      if (!c.touching) continue;
+      result.self_contact = true;
+      pair_contacts.push_back({i, j, c.force, c.stiffness});
+    }
+    // Summed in the order of the sphere indices, independent of the cells.
+    std::sort(pair_contacts.begin(), pair_contacts.end(),
+              [](const SpherePairContact& a, const SpherePairContact& b) {
+                return std::tie(a.i, a.j) < std::tie(b.i, b.j);
+              });
+  }
+}
+
+// Calls add(row, col, block) for every term of R / dt + K (dof offsets).
+template <typename Add>
+void OverdampedRodSolver::Workspace::add_couplings(const OverdampedRod& rod, const RodDrag& drag, double dt,
+                                                   Add add) const {
+  const int n = rod.size();
+  for (int i = 0; i < n; ++i) {
+    add(6 * i + 3, 6 * i + 3, (drag.rotational_resistance[i] / dt * Eigen::Matrix3d::Identity()).eval());
+    if (drag.coupled()) {
+      for (int k = 0; k < n; ++k)
+        add(6 * i, 6 * k, (drag.coupled_resistance.block<3, 3>(3 * i, 3 * k) / dt).eval());
+    } else {
+      add(6 * i, 6 * i, (drag.resistance[i] / dt).eval());
+    }
+  }
+  for (std::size_t k = 0; k < rod.bonds.size(); ++k) {
+    const RodBond& b = rod.bonds[k];
+    const BondJacobian& jacobian = bond_jacobians[k];
+    add(6 * b.i, 6 * b.i, (-jacobian.block<6, 6>(0, 0)).eval());
+    add(6 * b.i, 6 * b.j, (-jacobian.block<6, 6>(0, 6)).eval());
+    add(6 * b.j, 6 * b.i, (-jacobian.block<6, 6>(6, 0)).eval());
+    add(6 * b.j, 6 * b.j, (-jacobian.block<6, 6>(6, 6)).eval());
+  }
+  for (const SphereWallContact& c : wall_contacts) {
+    add(6 * c.sphere, 6 * c.sphere, c.stiffness);
+    if (c.rubbing) add(6 * c.sphere, 6 * c.sphere, (c.friction / dt).eval());
+  }
+  for (const SpherePairContact& c : pair_contacts) {
+    add(6 * c.i, 6 * c.i, c.stiffness);
+    add(6 * c.j, 6 * c.j, c.stiffness);
+    add(6 * c.i, 6 * c.j, (-c.stiffness).eval());
+    add(6 * c.j, 6 * c.i, (-c.stiffness).eval());
+  }
+}
+
+// Block elimination of the block-tridiagonal system in place: rhs becomes
+// the solution, upper[k] becomes A'(k,k)^-1 A(k,k+1).
+void OverdampedRodSolver::Workspace::solve_banded(int n) {
+  for (int k = 0; k < n; ++k) {
+    auto y = rhs.segment<6>(6 * k);
+    if (k > 0) {
+      diagonal[k].noalias() -= lower[k] * upper[k - 1];
+      y.noalias() -= lower[k] * rhs.segment<6>(6 * (k - 1));
+    }
+    const SmallBlockLu<6> block_lu(diagonal[k]);
+    block_lu.solve_in_place(y);
+    if (k + 1 < n) block_lu.solve_in_place(upper[k]);
+  }
+  for (int k = n - 2; k >= 0; --k) rhs.segment<6>(6 * k).noalias() -= upper[k] * rhs.segment<6>(6 * (k + 1));
+}
+
+// Factorises `matrix`, analysing its pattern only when it changed.
+void OverdampedRodSolver::Workspace::factorize_sparse() {
+  const int outer_size = static_cast<int>(matrix.outerSize()) + 1;
+  const int nonzeros = static_cast<int>(matrix.nonZeros());
+  const bool same_pattern =
+      !analysed_outer.empty() && static_cast<int>(analysed_outer.size()) == outer_size &&
+      static_cast<int>(analysed_inner.size()) == nonzeros &&
+      std::equal(analysed_outer.begin(), analysed_outer.end(), matrix.outerIndexPtr()) &&
+      std::equal(analysed_inner.begin(), analysed_inner.end(), matrix.innerIndexPtr());
+  if (!same_pattern) {
+    lu.analyzePattern(matrix);
+    analysed_outer.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + outer_size);
+    analysed_inner.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + nonzeros);
+    ++analyses;
+  }
+  lu.factorize(matrix);
+}
 
 OverdampedRodSolver::OverdampedRodSolver() : workspace_(std::make_unique<Workspace>()) {}
 OverdampedRodSolver::~OverdampedRodSolver() = default;
@@ -160,6 +398,7 @@ OverdampedRodSolver::OverdampedRodSolver(OverdampedRodSolver&&) noexcept = defau
 OverdampedRodSolver& OverdampedRodSolver::operator=(OverdampedRodSolver&&) noexcept = default;
 
 int OverdampedRodSolver::pattern_analyses() const { return workspace_->analyses; }
+const OverdampedSolverStatistics& OverdampedRodSolver::statistics() const { return workspace_->statistics; }
 
 OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag, double dt,
                                          const ChannelGeometry* geometry, const WallContactParameters* walls) {
@@ -169,130 +408,98 @@ OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag
 
 OverdampedStepResult OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double dt,
                                                const ChannelGeometry* geometry, const WallContactParameters* walls) {
+  OverdampedStepResult result;
+  step(rod, drag, dt, geometry, walls, result);
+  return result;
+}
+
+void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double dt, const ChannelGeometry* geometry,
+                               const WallContactParameters* walls, OverdampedStepResult& result) {
   Workspace& w = *workspace_;
+  const Clock::time_point t_start = Clock::now();
   const int n = rod.size();
   const int ndof = 6 * n;
-  Eigen::VectorXd& rhs = w.rhs;
-  rhs.setZero(ndof);
-  std::vector<Eigen::Triplet<double>>& triplets = w.triplets;
-  triplets.clear();
-  triplets.reserve(36 * n + 144 * rod.bonds.size() + 9 * n * (drag.coupled() ? n : 1));
-  OverdampedStepResult result;
+  result.largest_displacement = 0.0;
+  result.wall_contact = result.self_contact = false;
+  result.wall_force = 0.0;
+  result.friction_force = 0.0;
+  w.analyse_structure(rod);
   if (static_cast<int>(w.previous_velocities.size()) != n) w.previous_velocities.assign(n, Vector6d::Zero());
-  w.frictions.clear();
 
-  // Hydrodynamic resistance / dt and driving.
+  // Bonds: loads at y_n and their Jacobian (K = -d loads / dy).
+  for (std::size_t k = 0; k < rod.bonds.size(); ++k) {
+    const RodBond& b = rod.bonds[k];
+    beam_bond_loads_and_jacobian(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j],
+                                 rod.orientations[b.j], b.rest, b.stiffness, w.bond_loads[k], w.bond_jacobians[k]);
+  }
+  const Clock::time_point t_bonds = Clock::now();
+  w.find_contacts(rod, geometry, walls, result);
+  const Clock::time_point t_contacts = Clock::now();
+
+  // Right-hand side: driving, external, bond and contact loads.
+  Eigen::VectorXd& rhs = w.rhs;
+  rhs.resize(ndof);
   for (int i = 0; i < n; ++i) {
-    rhs.segment<3>(6 * i) += drag.driving_force[i] + rod.external_forces[i];
-    rhs.segment<3>(6 * i + 3) += drag.driving_torque[i] + rod.external_torques[i];
-    for (int a = 0; a < 3; ++a) triplets.emplace_back(6 * i + 3 + a, 6 * i + 3 + a, drag.rotational_resistance[i] / dt);
-    if (drag.coupled()) {
-      for (int k = 0; k < n; ++k)
-        for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b) {
-            const double value = drag.coupled_resistance(3 * i + a, 3 * k + b);
-            if (value != 0.0) triplets.emplace_back(6 * i + a, 6 * k + b, value / dt);
-          }
-    } else {
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) triplets.emplace_back(6 * i + a, 6 * i + b, drag.resistance[i](a, b) / dt);
-    }
+    rhs.segment<3>(6 * i) = drag.driving_force[i] + rod.external_forces[i];
+    rhs.segment<3>(6 * i + 3) = drag.driving_torque[i] + rod.external_torques[i];
+  }
+  for (std::size_t k = 0; k < rod.bonds.size(); ++k) {
+    rhs.segment<6>(6 * rod.bonds[k].i) += w.bond_loads[k].head<6>();
+    rhs.segment<6>(6 * rod.bonds[k].j) += w.bond_loads[k].tail<6>();
+  }
+  for (const SphereWallContact& c : w.wall_contacts) rhs.segment<3>(6 * c.sphere) += c.force;
+  for (const SpherePairContact& c : w.pair_contacts) {
+    rhs.segment<3>(6 * c.i) += c.force_on_i;
+    rhs.segment<3>(6 * c.j) -= c.force_on_i;
   }
 
-  // Bonds: loads at y_n and stiffness K = -d loads / dy. Every entry of a
-  // bond's block enters the pattern, also one that happens to be zero at
-  // this configuration, so that the pattern (and its LU analysis) stays put.
-  std::vector<SphereState>& state = w.state;
-  state.resize(n);
-  for (int i = 0; i < n; ++i) {
-    state[i].position = rod.positions[i];
-    state[i].orientation = rod.orientations[i];
-  }
-  Eigen::Matrix<double, 12, 1> loads;
-  Eigen::Matrix<double, 12, 12> jacobian;
-  for (const RodBond& b : rod.bonds) {
-    beam_bond_jacobian(state[b.i], state[b.j], b, loads, jacobian);
-    const int base[2] = {6 * b.i, 6 * b.j};
-    for (int r = 0; r < 12; ++r) {
-      rhs[base[r / 6] + r % 6] += loads[r];
-      for (int c = 0; c < 12; ++c) triplets.emplace_back(base[r / 6] + r % 6, base[c / 6] + c % 6, -jacobian(r, c));
+  // Matrix R / dt + K, factorised by the cheapest method its couplings allow.
+  const Eigen::VectorXd* displacement = &rhs;
+  if (w.chain && !drag.coupled() && w.pair_contacts.empty() && n > 0) {
+    for (int k = 0; k < n; ++k) {
+      w.diagonal[k].setZero();
+      w.upper[k].setZero();
+      w.lower[k].setZero();
     }
-  }
-
-  // Wall contacts.
-  if (geometry && walls) {
-    for (int i = 0; i < n; ++i) {
-      const WallContact c = wall_contact(*geometry, *walls, rod.positions[i], rod.radii[i]);
-      if (!c.touching) continue;
-      result.wall_contact = true;
-      result.wall_force += c.force.norm();
-      rhs.segment<3>(6 * i) += c.force;
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) triplets.emplace_back(6 * i + a, 6 * i + b, c.stiffness(a, b));
-      // Wall friction: secant resistance about the previous velocities,
-      // c G^T G / dt on the sphere's 6x6 block (dynamics/wall_contact.h).
-      if (walls->friction_coefficient > 0.0) {
-        Vector6d u0 = w.previous_velocities[i];
-        if (static_cast<int>(rod.velocities.size()) == n) {
-          u0.head<3>() = rod.velocities[i];
-          u0.tail<3>() = static_cast<int>(rod.angular_velocities.size()) == n ? rod.angular_velocities[i]
-                                                                               : Eigen::Vector3d::Zero();
-        }
-        Matrix6d friction = Matrix6d::Zero();
-        for (int k = 0; k < c.points; ++k)
-          friction += wall_friction_resistance(c.point[k], rod.radii[i], walls->friction_coefficient,
-                                               walls->slip_velocity, u0);
-        w.frictions.emplace_back(i, friction);
-        for (int a = 0; a < 6; ++a)
-          for (int b = 0; b < 6; ++b) triplets.emplace_back(6 * i + a, 6 * i + b, friction(a, b) / dt);
-      }
-    }
-  }
-
-  // Non-bonded spheres of the rod touching each other (a folding rod).
-  if (walls && walls->self_contact && n > 2) {
-    double largest_radius = 0.0;
-    for (double r : rod.radii) largest_radius = std::max(largest_radius, r);
-    const auto candidates = nearby_sphere_pairs(rod.positions, 2.0 * largest_radius);
-    if (!candidates.empty()) {
-      std::vector<std::vector<int>> bonded(n);
-      for (const RodBond& b : rod.bonds) {
-        bonded[b.i].push_back(b.j);
-        bonded[b.j].push_back(b.i);
-      }
-      for (const auto& pair : candidates) {
-        const int i = pair.first, j = pair.second;
-        if (std::find(bonded[i].begin(), bonded[i].end(), j) != bonded[i].end()) continue;
-        const WallContact c = sphere_contact(*walls, rod.positions[i], rod.radii[i], rod.positions[j], rod.radii[j]);
-        if (!c.touching) continue;
-        result.self_contact = true;
-        rhs.segment<3>(6 * i) += c.force;
-        rhs.segment<3>(6 * j) -= c.force;
-        for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b) {
-            triplets.emplace_back(6 * i + a, 6 * i + b, c.stiffness(a, b));
-            triplets.emplace_back(6 * j + a, 6 * j + b, c.stiffness(a, b));
-            triplets.emplace_back(6 * i + a, 6 * j + b, -c.stiffness(a, b));
-            triplets.emplace_back(6 * j + a, 6 * i + b, -c.stiffness(a, b));
-          }
-      }
-    }
-  }
-
-  Eigen::SparseMatrix<double>& matrix = w.matrix;
-  matrix.resize(ndof, ndof);
-  matrix.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::VectorXd dy;
-  if (drag.coupled() || n <= 16) {
-    dy = Eigen::MatrixXd(matrix).partialPivLu().solve(rhs);
+    w.add_couplings(rod, drag, dt, [&w](int row, int col, const auto& block) {
+      using Block = std::decay_t<decltype(block)>;
+      const int r = row / 6, c = col / 6;
+      Matrix6d& target = c == r ? w.diagonal[r] : (c == r + 1 ? w.upper[r] : w.lower[r]);
+      target.template block<Block::RowsAtCompileTime, Block::ColsAtCompileTime>(row % 6, col % 6) += block;
+    });
+    w.solve_banded(n);
+    ++w.statistics.banded_steps;
+  } else if (drag.coupled() || n <= 16) {
+    w.dense.setZero(ndof, ndof);
+    w.add_couplings(rod, drag, dt, [&w](int row, int col, const auto& block) {
+      using Block = std::decay_t<decltype(block)>;
+      w.dense.template block<Block::RowsAtCompileTime, Block::ColsAtCompileTime>(row, col) += block;
+    });
+    w.dense_lu.compute(w.dense);
+    w.dy = w.dense_lu.solve(rhs);
+    displacement = &w.dy;
+    ++w.statistics.dense_steps;
   } else {
-    w.factorize();
-    dy = w.lu.solve(rhs);
+    // Every entry of a bond's block enters the pattern, also one that
+    // happens to be zero at this configuration, so that the pattern (and its
+    // LU analysis) stays put.
+    w.triplets.clear();
+    w.add_couplings(rod, drag, dt, [&w](int row, int col, const auto& block) {
+      for (int a = 0; a < block.rows(); ++a)
+        for (int b = 0; b < block.cols(); ++b) w.triplets.emplace_back(row + a, col + b, block(a, b));
+    });
+    w.matrix.resize(ndof, ndof);
+    w.matrix.setFromTriplets(w.triplets.begin(), w.triplets.end());
+    w.factorize_sparse();
+    w.dy = w.lu.solve(rhs);
+    displacement = &w.dy;
+    ++w.statistics.sparse_steps;
   }
+  const Eigen::VectorXd& dy = *displacement;
 
   result.velocities.resize(n);
   result.angular_velocities.resize(n);
-  Eigen::VectorXd translational(3 * n);
+  result.hydrodynamic_forces.resize(n);
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d dx = dy.segment<3>(6 * i);
     const Eigen::Vector3d dphi = dy.segment<3>(6 * i + 3);
@@ -300,16 +507,28 @@ OverdampedStepResult OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag
     rod.orientations[i] = (quaternion_from_rotation_vector(dphi) * rod.orientations[i]).normalized();
     result.velocities[i] = dx / dt;
     result.angular_velocities[i] = dphi / dt;
-    translational.segment<3>(3 * i) = result.velocities[i];
     result.largest_displacement = std::max(result.largest_displacement, dx.norm());
     w.previous_velocities[i] << result.velocities[i], result.angular_velocities[i];
   }
-  for (const auto& rubbing : w.frictions)
-    result.friction_force += (rubbing.second * w.previous_velocities[rubbing.first]).head<3>().norm();
-  const Eigen::VectorXd f = drag.forces(translational);
-  result.hydrodynamic_forces.resize(n);
-  for (int i = 0; i < n; ++i) result.hydrodynamic_forces[i] = f.segment<3>(3 * i);
-  return result;
+  for (const SphereWallContact& c : w.wall_contacts)
+    if (c.rubbing) result.friction_force += (c.friction * w.previous_velocities[c.sphere]).head<3>().norm();
+  // F_hyd = driving - R v at the new velocities.
+  if (drag.coupled()) {
+    w.velocities.resize(3 * n);
+    for (int i = 0; i < n; ++i) w.velocities.segment<3>(3 * i) = result.velocities[i];
+    w.hydrodynamic.noalias() = drag.coupled_resistance * w.velocities;
+    for (int i = 0; i < n; ++i) result.hydrodynamic_forces[i] = drag.driving_force[i] - w.hydrodynamic.segment<3>(3 * i);
+  } else {
+    for (int i = 0; i < n; ++i)
+      result.hydrodynamic_forces[i] = drag.driving_force[i] - drag.resistance[i] * result.velocities[i];
+  }
+  const Clock::time_point t_end = Clock::now();
+  OverdampedSolverStatistics& stats = w.statistics;
+  ++stats.steps;
+  stats.sphere_steps += n;
+  stats.bond_seconds += seconds_between(t_start, t_bonds);
+  stats.contact_seconds += seconds_between(t_bonds, t_contacts);
+  stats.solve_seconds += seconds_between(t_contacts, t_end);
 }
 
 }  // namespace hsrod

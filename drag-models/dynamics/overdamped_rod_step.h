@@ -8,14 +8,24 @@
 // vectors dy = (dx_i, dphi_i) of all spheres,
 //     (R / dt + K) dy = F_hyd(v = 0) + F_bonds(y_n) + F_walls(y_n) + F_ext,
 // with R the hydrodynamic resistance (hydro/hydrodynamic_model.h), K the
-// stiffness of the bonds and the wall contacts at y_n (bond Jacobian by
-// central differences of the bond law, wall contacts analytic); with wall
+// stiffness of the bonds and the wall contacts at y_n (bond Jacobian in
+// closed form, rod/beam_bond_jacobian.h; wall contacts analytic); with wall
 // friction also its secant resistance C about the previous velocities
 // (R/dt + K + C/dt; dynamics/wall_contact.h). This is one
 // Newton step of backward Euler: stable for any dt on the linear(ised)
 // springs, so the step is set by accuracy, not by the 1e-9 s explicit limit.
 // Bond dashpots are negligible next to the fluid friction here and are not
 // applied in this integrator.
+//
+// The solve uses the structure of the matrix: a chain (every bond joins
+// spheres i and i+1) with local drag is block-tridiagonal in 6x6 blocks and
+// is factorised by block elimination (block Thomas algorithm, O(n), no
+// pivoting across blocks: R/dt + K is close to symmetric positive definite),
+// without allocation once the rod's size is known. Wall friction acts on
+// one sphere (a 6x6 block on the diagonal) and keeps the band. Couplings off
+// the band (a self-contact of a folding rod, bonds of multi-sphere sections)
+// take a sparse LU; a non-local (dense 3n x 3n) resistance takes a dense LU, which
+// is then the step's O(n^3) cost.
 #pragma once
 
 #include "dynamics/wall_contact.h"
@@ -62,6 +72,18 @@ struct OverdampedStepResult {
   double friction_force = 0.0;                    // sum of |wall friction force| at the new velocities [N]
 };
 
+// Where the time of a solver's steps went (wall time, steady clock).
+struct OverdampedSolverStatistics {
+  long steps = 0;                // steps taken
+  long sphere_steps = 0;         // sum over steps of the rod's spheres
+  double bond_seconds = 0.0;     // bond loads and Jacobians [s]
+  double contact_seconds = 0.0;  // wall and self-contacts (search and Hertz laws) [s]
+  double solve_seconds = 0.0;    // assembly, factorisation, substitution, update [s]
+  long banded_steps = 0;         // steps solved block-tridiagonally
+  long sparse_steps = 0;         // steps solved by the sparse LU
+  long dense_steps = 0;          // steps solved by a dense LU
+};
+
 // A rod at rest in its layout (identity orientations), bonds from `material`.
 OverdampedRod make_overdamped_rod(const RodLayout& layout, const BeamBondMaterial& material, double sphere_diameter);
 
@@ -82,10 +104,16 @@ class OverdampedRodSolver {
   // `geometry` may be null (no scene walls), `walls` null (no contacts at all).
   OverdampedStepResult step(OverdampedRod& rod, const RodDrag& drag, double dt, const ChannelGeometry* geometry,
                             const WallContactParameters* walls);
+  // The same, writing into `result` (its vectors keep their memory between steps).
+  void step(OverdampedRod& rod, const RodDrag& drag, double dt, const ChannelGeometry* geometry,
+            const WallContactParameters* walls, OverdampedStepResult& result);
 
-  // Times the sparse factorisation's pattern was analysed (a test hook: once
-  // for a rod whose pattern does not change).
+  // Times the factorisation's structure was analysed (a test hook: once for a
+  // rod whose pattern does not change): for a chain, its band (sizes of the
+  // block storage); otherwise the sparse LU's pattern.
   int pattern_analyses() const;
+
+  const OverdampedSolverStatistics& statistics() const;
 
  private:
   struct Workspace;
@@ -103,7 +131,8 @@ OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag
 std::vector<std::pair<int, int>> nearby_sphere_pairs(const std::vector<Eigen::Vector3d>& positions, double reach);
 
 // Bond loads and their 12x12 Jacobian (d loads / d (x_i, phi_i, x_j, phi_j))
-// by central differences; loads ordered (F_i, T_i, F_j, T_j).
+// by central differences; loads ordered (F_i, T_i, F_j, T_j). The step uses
+// the closed form (rod/beam_bond_jacobian.h); this is its check.
 void beam_bond_jacobian(const SphereState& si, const SphereState& sj, const RodBond& bond,
                         Eigen::Matrix<double, 12, 1>& loads, Eigen::Matrix<double, 12, 12>& jacobian);
 

@@ -71,38 +71,51 @@ void beam_bond_loads_and_jacobian(const Eigen::Vector3d& x_i, const Eigen::Quate
 
   // Derivatives of theta and e with respect to phi_i, phi_j (3x3 each).
   const Eigen::Matrix3d jl_inv = so3_left_jacobian_inverse(theta);
-  const Eigen::Matrix3d jr_inv = so3_left_jacobian_inverse(-theta);
+  const Eigen::Matrix3d jr_inv = jl_inv.transpose();  // J_l^-1(-theta) = J_l^-1(theta)^T
   const Eigen::Matrix3d jl_half = so3_left_jacobian(0.5 * theta);
   const Eigen::Matrix3d r_half = (q_mid * q_i.conjugate()).toRotationMatrix();  // Exp(theta / 2)
   const Eigen::Matrix3d e_cross = cross_matrix(expected);
   const Eigen::Matrix3d de_dphi_i = -e_cross * (r_half - 0.5 * jl_half * jr_inv);
   const Eigen::Matrix3d de_dphi_j = -0.5 * e_cross * (jl_half * jl_inv);
 
-  // 3x12 derivatives with respect to (x_i, phi_i, x_j, phi_j).
-  using Row3 = Eigen::Matrix<double, 3, 12>;
+  // Product rule, block by block (columns x_i, phi_i, x_j, phi_j): with
+  // d bond = (-I, 0, I, 0), d m = d bond - d e, d n = d e / L0,
+  //   d F = -k_s d m - (k_n - k_s) ((n.m) I + n m^T) d n - (k_n - k_s) n n^T d m,
+  //   d M = k_b d theta + (k_t - k_b) (((n.theta) I + n theta^T) d n + n n^T d theta).
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
-  Row3 d_bond = Row3::Zero(), d_expected = Row3::Zero(), d_theta = Row3::Zero();
-  d_bond.block<3, 3>(0, 0) = -identity;
-  d_bond.block<3, 3>(0, 6) = identity;
-  d_expected.block<3, 3>(0, 3) = de_dphi_i;
-  d_expected.block<3, 3>(0, 9) = de_dphi_j;
-  d_theta.block<3, 3>(0, 3) = -jr_inv;
-  d_theta.block<3, 3>(0, 9) = jl_inv;
-  const Row3 d_axis = d_expected / rest_length;
-  const Row3 d_mismatch = d_bond - d_expected;
   const Eigen::Matrix3d axis_outer = axis * axis.transpose();
-
-  const Row3 d_force = -k.shear * d_mismatch -
-                       (k.axial - k.shear) * ((axial * identity + axis * mismatch.transpose()) * d_axis +
-                                              axis_outer * d_mismatch);
-  const Row3 d_moment = k.bending * d_theta + (k.twisting - k.bending) *
-                                                  ((twist * identity + axis * theta.transpose()) * d_axis +
-                                                   axis_outer * d_theta);
-  const Row3 d_couple = 0.5 * cross_matrix(force_on_j) * d_bond - 0.5 * cross_matrix(bond) * d_force;
-  jacobian.block<3, 12>(0, 0) = -d_force;
-  jacobian.block<3, 12>(3, 0) = d_moment + d_couple;
-  jacobian.block<3, 12>(6, 0) = d_force;
-  jacobian.block<3, 12>(9, 0) = -d_moment + d_couple;
+  const double axial_excess = k.axial - k.shear, twist_excess = k.twisting - k.bending;
+  const Eigen::Matrix3d translation = k.shear * identity + axial_excess * axis_outer;  // -dF/dx_j = dF/dx_i
+  const Eigen::Matrix3d force_rotation =
+      translation - (axial_excess / rest_length) * (axial * identity + axis * mismatch.transpose());
+  const Eigen::Matrix3d moment_theta = k.bending * identity + twist_excess * axis_outer;
+  const Eigen::Matrix3d moment_axis = (twist_excess / rest_length) * (twist * identity + axis * theta.transpose());
+  const Eigen::Matrix3d df_dphi_i = force_rotation * de_dphi_i;
+  const Eigen::Matrix3d df_dphi_j = force_rotation * de_dphi_j;
+  const Eigen::Matrix3d dm_dphi_i = -moment_theta * jr_inv + moment_axis * de_dphi_i;
+  const Eigen::Matrix3d dm_dphi_j = moment_theta * jl_inv + moment_axis * de_dphi_j;
+  // Couple -1/2 bond x F: d = 1/2 [F]x d bond - 1/2 [bond]x d F.
+  const Eigen::Matrix3d half_bond = 0.5 * cross_matrix(bond), half_force = 0.5 * cross_matrix(force_on_j);
+  const Eigen::Matrix3d dc_dx_i = -half_force - half_bond * translation;
+  const Eigen::Matrix3d dc_dphi_i = -half_bond * df_dphi_i;
+  const Eigen::Matrix3d dc_dphi_j = -half_bond * df_dphi_j;
+  // Rows (F_i, T_i, F_j, T_j) = (-F, M + c, F, -M + c); dc/dx_j = -dc/dx_i.
+  jacobian.block<3, 3>(0, 0) = -translation;
+  jacobian.block<3, 3>(0, 3) = -df_dphi_i;
+  jacobian.block<3, 3>(0, 6) = translation;
+  jacobian.block<3, 3>(0, 9) = -df_dphi_j;
+  jacobian.block<3, 3>(3, 0) = dc_dx_i;
+  jacobian.block<3, 3>(3, 3) = dm_dphi_i + dc_dphi_i;
+  jacobian.block<3, 3>(3, 6) = -dc_dx_i;
+  jacobian.block<3, 3>(3, 9) = dm_dphi_j + dc_dphi_j;
+  jacobian.block<3, 3>(6, 0) = translation;
+  jacobian.block<3, 3>(6, 3) = df_dphi_i;
+  jacobian.block<3, 3>(6, 6) = -translation;
+  jacobian.block<3, 3>(6, 9) = df_dphi_j;
+  jacobian.block<3, 3>(9, 0) = dc_dx_i;
+  jacobian.block<3, 3>(9, 3) = -dm_dphi_i + dc_dphi_i;
+  jacobian.block<3, 3>(9, 6) = -dc_dx_i;
+  jacobian.block<3, 3>(9, 9) = -dm_dphi_j + dc_dphi_j;
 }
 
 }  // namespace hsrod

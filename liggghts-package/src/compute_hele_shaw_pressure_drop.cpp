@@ -30,15 +30,15 @@
 
 using namespace LAMMPS_NS;
 
-ComputeHeleShawPressureDrop::ComputeHeleShawPressureDrop(LAMMPS *lmp, int &iarg, int narg, char **arg)
-    : Compute(lmp, iarg, narg, arg),
+ComputeHeleShawPressureDrop::ComputeHeleShawPressureDrop(LAMMPS *instance, int &iarg, int narg, char **arg)
+    : Compute(instance, iarg, narg, arg),
       drag_(nullptr),
       x_up_(0.0),
       x_down_(0.0),
       pieces_(2000),
       background_(0.0),
       background_done_(false) {
-  const char *style = "compute hele_shaw/pressure_drop";
+  const char *style_name = "compute hele_shaw/pressure_drop";
   if (iarg >= narg)
     error->all(FLERR, "Illegal compute hele_shaw/pressure_drop command: missing the ID of a fix hele_shaw/drag");
   drag_id_ = arg[iarg++];
@@ -50,14 +50,14 @@ ComputeHeleShawPressureDrop::ComputeHeleShawPressureDrop(LAMMPS *lmp, int &iarg,
     const char *key = arg[iarg];
     if (strcmp(key, "sections") == 0) {
       if (iarg + 2 >= narg) error->all(FLERR, "Illegal compute hele_shaw/pressure_drop command: sections needs x_up x_down");
-      x_up_ = parse_number(error, style, key, arg[iarg + 1]);
-      x_down_ = parse_number(error, style, key, arg[iarg + 2]);
+      x_up_ = parse_number(error, style_name, key, arg[iarg + 1]);
+      x_down_ = parse_number(error, style_name, key, arg[iarg + 2]);
       if (!(g.x_lo() <= x_up_ && x_up_ < x_down_ && x_down_ <= g.x_hi()))
         error->all(FLERR, "compute hele_shaw/pressure_drop: sections need x_lo <= x_up < x_down <= x_hi of the channel");
       iarg += 3;
     } else if (strcmp(key, "pieces") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "Illegal compute hele_shaw/pressure_drop command: pieces needs a value");
-      pieces_ = parse_integer(error, style, key, arg[iarg + 1]);
+      pieces_ = parse_integer(error, style_name, key, arg[iarg + 1]);
       if (pieces_ < 10 || pieces_ > 1000000) error->all(FLERR, "compute hele_shaw/pressure_drop: pieces must be in [10, 1000000]");
       iarg += 2;
     } else {
@@ -110,13 +110,13 @@ void ComputeHeleShawPressureDrop::compute_vector() {
   // Loads: the drag fix's per-atom hydrodynamic force on the spheres of this
   // compute's group (its last evaluation), local atoms, summed over ranks.
   std::vector<hsrod::ParticleLoad> loads;
-  double **force = drag_->array_atom;
+  double **sphere_force = drag_->array_atom;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit) || !(atom->mask[i] & drag_->groupbit)) continue;
     hsrod::ParticleLoad p;
     p.position = Eigen::Vector3d(atom->x[i][0], atom->x[i][1], atom->x[i][2]);
     p.radius = atom->radius[i];
-    p.force = Eigen::Vector3d(force[i][0], force[i][1], force[i][2]);
+    p.force = Eigen::Vector3d(sphere_force[i][0], sphere_force[i][1], sphere_force[i][2]);
     loads.push_back(p);
   }
   double local = 0.0, rods = 0.0;

@@ -31,9 +31,9 @@
 
 using namespace LAMMPS_NS;
 
-ComputeHeleShawProbe::ComputeHeleShawProbe(LAMMPS *lmp, int &iarg, int narg, char **arg)
-    : Compute(lmp, iarg, narg, arg), drag_(nullptr), has_line_(false), line_pieces_(0) {
-  const char *style = "compute hele_shaw/probe";
+ComputeHeleShawProbe::ComputeHeleShawProbe(LAMMPS *instance, int &iarg, int narg, char **arg)
+    : Compute(instance, iarg, narg, arg), drag_(nullptr), has_line_(false), line_pieces_(0) {
+  const char *style_name = "compute hele_shaw/probe";
   if (iarg >= narg) error->all(FLERR, "Illegal compute hele_shaw/probe command: missing the ID of a fix hele_shaw/drag");
   drag_id_ = arg[iarg++];
   find_drag();
@@ -49,15 +49,15 @@ ComputeHeleShawProbe::ComputeHeleShawProbe(LAMMPS *lmp, int &iarg, int narg, cha
     };
     if (strcmp(key, "point") == 0) {
       need(2);
-      single.emplace_back(parse_number(error, style, key, arg[iarg + 1]), parse_number(error, style, key, arg[iarg + 2]));
+      single.emplace_back(parse_number(error, style_name, key, arg[iarg + 1]), parse_number(error, style_name, key, arg[iarg + 2]));
       iarg += 3;
     } else if (strcmp(key, "line") == 0) {
       need(5);
       if (has_line_) error->all(FLERR, "compute hele_shaw/probe: give at most one line");
       has_line_ = true;
-      line_a_ = {parse_number(error, style, key, arg[iarg + 1]), parse_number(error, style, key, arg[iarg + 2])};
-      line_b_ = {parse_number(error, style, key, arg[iarg + 3]), parse_number(error, style, key, arg[iarg + 4])};
-      line_pieces_ = parse_integer(error, style, key, arg[iarg + 5]);
+      line_a_ = {parse_number(error, style_name, key, arg[iarg + 1]), parse_number(error, style_name, key, arg[iarg + 2])};
+      line_b_ = {parse_number(error, style_name, key, arg[iarg + 3]), parse_number(error, style_name, key, arg[iarg + 4])};
+      line_pieces_ = parse_integer(error, style_name, key, arg[iarg + 5]);
       if (line_pieces_ < 1 || line_pieces_ > 100000)
         error->all(FLERR, "compute hele_shaw/probe: line needs 1 to 100000 points");
       if (!((line_b_ - line_a_).norm() > 0.0))

@@ -35,8 +35,8 @@
 
 using namespace LAMMPS_NS;
 
-ComputeHeleShawRodLoad::ComputeHeleShawRodLoad(LAMMPS *lmp, int &iarg, int narg, char **arg)
-    : Compute(lmp, iarg, narg, arg), drag_(nullptr), last_step_(-1) {
+ComputeHeleShawRodLoad::ComputeHeleShawRodLoad(LAMMPS *instance, int &iarg, int narg, char **arg)
+    : Compute(instance, iarg, narg, arg), drag_(nullptr), last_step_(-1) {
   if (iarg >= narg)
     error->all(FLERR, "Illegal compute hele_shaw/rod_load command: missing the ID of a fix hele_shaw/drag");
   drag_id_ = arg[iarg++];

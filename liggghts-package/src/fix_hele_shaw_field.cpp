@@ -33,20 +33,20 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-FixHeleShawField::FixHeleShawField(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg),
+FixHeleShawField::FixHeleShawField(LAMMPS *instance, int narg, char **arg)
+    : Fix(instance, narg, arg),
       drag_(nullptr),
       spacing_(0.0),
       gap_layers_(0),
       walls_(true),
       walls_written_(false),
       last_written_(-1) {
-  const char *style = "fix hele_shaw/field";
+  const char *style_name = "fix hele_shaw/field";
   if (narg < 6)
     error->all(FLERR, "Illegal fix hele_shaw/field command: expected fix ID group hele_shaw/field drag-ID N prefix");
   drag_id_ = arg[3];
   find_drag();
-  nevery = parse_integer(error, style, "N", arg[4]);
+  nevery = parse_integer(error, style_name, "N", arg[4]);
   if (nevery < 1) error->all(FLERR, "fix hele_shaw/field: N (output interval) must be >= 1 step");
   prefix_ = arg[5];
   int iarg = 6;
@@ -58,13 +58,13 @@ FixHeleShawField::FixHeleShawField(LAMMPS *lmp, int narg, char **arg)
       error->all(FLERR, msg);
     }
     if (strcmp(key, "spacing") == 0) {
-      spacing_ = parse_number(error, style, key, arg[iarg + 1]);
+      spacing_ = parse_number(error, style_name, key, arg[iarg + 1]);
       if (!(spacing_ > 0.0)) error->all(FLERR, "fix hele_shaw/field: spacing must be > 0 m");
     } else if (strcmp(key, "gap_layers") == 0) {
-      gap_layers_ = parse_integer(error, style, key, arg[iarg + 1]);
+      gap_layers_ = parse_integer(error, style_name, key, arg[iarg + 1]);
       if (gap_layers_ < 0 || gap_layers_ > 1000) error->all(FLERR, "fix hele_shaw/field: gap_layers must be in [0, 1000]");
     } else if (strcmp(key, "walls") == 0) {
-      walls_ = parse_yes_no(error, style, key, arg[iarg + 1]);
+      walls_ = parse_yes_no(error, style_name, key, arg[iarg + 1]);
     } else {
       char msg[256];
       std::snprintf(msg, sizeof(msg),

@@ -34,8 +34,8 @@ namespace {
 const char *kStyle = "fix rod/outcome";
 }
 
-FixRodOutcome::FixRodOutcome(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg),
+FixRodOutcome::FixRodOutcome(LAMMPS *instance, int narg, char **arg)
+    : Fix(instance, narg, arg),
       drag_(nullptr),
       pass_x_given_(false),
       averaging_given_(false),

@@ -19,7 +19,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-# compute rod/shape column 14 (liggghts-package/doc/compute_rod_shape.txt)
+# fix rod/outcome output [2] = compute rod/shape column 14 (liggghts-package/doc/fix_rod_outcome.txt)
 OUTCOME_LABELS = {0: "en route (undecided)", 1: "passed without contact", 2: "passed with contact", 3: "clogged"}
 MARKERS = {0: ("o", "0.6"), 1: ("o", "tab:green"), 2: ("s", "tab:orange"), 3: ("X", "tab:red")}
 
@@ -52,7 +52,7 @@ def need(table, *names):
 
 def regime_map(args, table):
     need(table, args.x, args.y, args.klass)
-    fig, ax = plt.subplots(figsize=(6, 4.5))
+    fig, ax = plt.subplots(figsize=(8, 4.5))
     classes = {}
     failed = []
     for r in table:
@@ -76,7 +76,8 @@ def regime_map(args, table):
     ax.set_xlabel(args.xlabel or args.x)
     ax.set_ylabel(args.ylabel or args.y)
     ax.set_title(args.title or f"{args.klass} over {args.x} and {args.y} ({len(table)} cases)")
-    ax.legend(fontsize=8, loc="best")
+    # Outside the axes: a regime map fills its whole plot area.
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     return fig
 
 
@@ -128,7 +129,7 @@ def main():
     table = load(args.csv, args.where)
     fig = regime_map(args, table) if args.kind == "map" else measure_plot(args, table)
     fig.tight_layout()
-    fig.savefig(args.output, dpi=120)
+    fig.savefig(args.output, dpi=120, bbox_inches="tight")
     print(f"plot_sweep: wrote {args.output}")
 
 

@@ -17,10 +17,10 @@ cd "$root/examples/regime-map"
 sweep="$build/hsrod-sweep"
 E_values=$(/usr/bin/python3 -c "print(','.join('%.4g' % (15e3 * 10 ** (3 * i / 19)) for i in range(20)))")
 args=(--in in.regime --var E "$E_values" --var alpha 0:90:22.5
-      --measure outcome=c_shape[14] --measure x=c_shape[2] --measure angle=c_shape[7] --measure t=time)
+      --measure outcome=f_out[2] --measure x=c_shape[2] --measure angle=c_shape[7] --measure t=time)
 
 echo "== warming the flow cache"
-"$sweep" --in in.regime --var E 15e6 --measure outcome=c_shape[14] \
+"$sweep" --in in.regime --var E 15e6 --measure outcome=f_out[2] \
   --output "$work/warm.csv" --fresh | tail -2
 
 run() {  # run <label> <ranks>

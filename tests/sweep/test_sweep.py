@@ -11,6 +11,11 @@ Usage: test_sweep.py <test> <hsrod-sweep> <hsrod> <mpirun> <work-dir>
            uninterrupted sweep.
   failure  a case with E < 0 is recorded with LIGGGHTS' ERROR message and a
            case that never ends is killed at --case-timeout; the others run.
+  regime   the regime-map path of examples/regime-map/run_maps.sh on two
+           cases of examples/clogging/in.clogging (stiff rod, alpha = 0):
+           fix rod/outcome read as a measure gives the paper's classes,
+           passage without contact at L_rod/d_pore = 1 and clogging at 2
+           (Fig. 10a), with the first contact only in the clogged case.
 """
 import csv
 import os
@@ -178,6 +183,25 @@ elif test == "failure":
     log_dir = os.path.join(work, "failure_logs")
     kept = sorted(f for f in os.listdir(log_dir) if f.startswith("case"))
     check(len(kept) == 3, f"logs kept for the 3 failed cases only: {kept}")
+elif test == "regime":
+    clogging = os.path.join(HERE, "..", "..", "examples", "clogging")
+    cmd = [sweep, "--in", os.path.join(clogging, "in.clogging"), "--workdir", clogging,
+           "--output", os.path.join(work, "regime.csv"), "--fresh",
+           "--var", "model", "local", "--var", "E", "15e6", "--var", "ratio", "1,2",
+           "--measure", "outcome=f_out[2]", "--measure", "first_contact_t=f_out[3]", "--measure", "x=c_shape[2]"]
+    done = subprocess.run(cmd, cwd=work, capture_output=True, text=True, timeout=300)
+    print(done.stdout[-1500:], done.stderr[-1500:])
+    check(done.returncode == 0, f"hsrod-sweep on in.clogging exits with 0 (got {done.returncode})")
+    table = {r["ratio"]: r for r in rows("regime.csv")}
+    short, long_ = table.get("1", {}), table.get("2", {})
+    check(short.get("status") == "ok" and short.get("outcome") == "1"
+          and float(short.get("first_contact_t", "0")) < 0 and float(short.get("x", "0")) > 385e-6,
+          f"L_rod = d_pore passes without wall contact, centre past the pore: {short}")
+    check(long_.get("status") == "ok" and long_.get("outcome") == "3" and float(long_.get("first_contact_t", "-1")) > 0
+          and float(long_.get("x", "1")) < 300e-6,
+          f"L_rod = 2 d_pore clogs after a wall contact, centre in front of the throat: {long_}")
+    check(not any(f.startswith("clog_") or f.startswith("dump_") for f in os.listdir(clogging)),
+          "the swept cases wrote no CSV or VTK files into the example folder")
 else:
     sys.exit(f"unknown test {test}")
 

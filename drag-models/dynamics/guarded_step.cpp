@@ -100,13 +100,15 @@ StepAssessment assess_rod_step(const OverdampedRod& before, const OverdampedRod&
     const double moved = dx.segment<3>(3 * i).norm() / d;
     a.displacement = std::isfinite(moved) ? std::max(a.displacement, moved) : HUGE_VAL;
   }
-  // Bond strain change.
+  // Bond strain change and the bond load it carries.
+  double bond_load = 0.0;
   for (const RodBond& b : before.bonds) {
     const double l0 = b.rest.rest_length();
     const double e0 = (before.positions[b.j] - before.positions[b.i]).norm() / l0 - 1.0;
     const double e1 = (after.positions[b.j] - after.positions[b.i]).norm() / l0 - 1.0;
     const double change = std::abs(e1 - e0);
     a.strain_change = std::isfinite(change) ? std::max(a.strain_change, change) : HUGE_VAL;
+    bond_load = std::max(bond_load, b.stiffness.axial * l0 * change);
   }
   // Backward-Euler residual: R dy / dt = F_drive + F_ext + F_elastic(y_{n+1}).
   Eigen::VectorXd resist = Eigen::VectorXd::Zero(6 * n), driving = Eigen::VectorXd::Zero(6 * n);
@@ -120,6 +122,9 @@ StepAssessment assess_rod_step(const OverdampedRod& before, const OverdampedRod&
     driving.segment<3>(6 * i) = drag.driving_force[i] + before.external_forces[i];
     driving.segment<3>(6 * i + 3) = (drag.driving_torque[i] + before.external_torques[i]) / r;
   }
+  double drag_load = 0.0;
+  for (int i = 0; i < n; ++i) drag_load = std::max(drag_load, translational_resist.segment<3>(3 * i).norm());
+  a.bond_load_ratio = drag_load > 0.0 ? bond_load / drag_load : (bond_load > 0.0 ? HUGE_VAL : 0.0);
   const Eigen::VectorXd loads_before = elastic_loads(before, geometry, walls);
   const Eigen::VectorXd loads_after = elastic_loads(after, geometry, walls);
   const double scale = resist.norm() + driving.norm() + loads_before.norm();
@@ -197,7 +202,11 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
     OverdampedRod trial = current;
     const OverdampedStepResult r = solver.step(trial, current_drag, h, geometry, walls);
     StepAssessment a = assess_rod_step(current, trial, r, current_drag, h, geometry, walls, limits);
-    if (a.problem.empty()) {
+    using NewtonCheck = StepGuardLimits::NewtonCheck;
+    const bool suspect = limits.newton_check == NewtonCheck::kAlways ||
+                         (limits.newton_check == NewtonCheck::kWhenSuspect &&
+                          (a.bond_load_ratio > limits.suspect_bond_load || r.wall_contact));
+    if (a.problem.empty() && suspect) {
       // Step doubling: two steps of h/2 (drag re-evaluated at the midpoint).
       OverdampedRod half = current;
       RodDrag half_drag = current_drag;
@@ -257,6 +266,7 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
     report.worst.strain_change = std::max(report.worst.strain_change, a.strain_change);
     report.worst.residual = std::max(report.worst.residual, a.residual);
     report.worst.step_error = std::max(report.worst.step_error, a.step_error);
+    report.worst.bond_load_ratio = std::max(report.worst.bond_load_ratio, a.bond_load_ratio);
     current = std::move(trial);
     done += h;
     ++report.substeps;

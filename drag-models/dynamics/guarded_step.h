@@ -39,6 +39,14 @@ struct StepGuardLimits {
   // to the largest displacement of the step; differences below 1e-8 d (below
   // max_overlap radii while a sphere touches a wall) always pass [-].
   double max_step_error = 0.01;
+  // Step doubling costs two more solves, so by default it runs only where
+  // the linearisation is suspect: a bond's load change k_n L0 |d strain|
+  // above `suspect_bond_load` of the largest drag force of the step
+  // |R dx / dt| (a stiff rod turning: the linearised rotation stretches its
+  // bonds), or a wall contact during the step.
+  enum class NewtonCheck { kAlways, kWhenSuspect, kNever };
+  NewtonCheck newton_check = NewtonCheck::kWhenSuspect;
+  double suspect_bond_load = 0.05;  // [-]
   double max_overlap = 0.1;         // largest new overlap with a wall [sphere radii]
   int max_substeps = 1024;          // finest substep dt / max_substeps (a power of 2) [-]
   bool check_walls = true;          // refuse a sphere centre in or through a wall
@@ -49,7 +57,8 @@ struct StepAssessment {
   double displacement = 0.0;   // largest |dx| / d [-]
   double strain_change = 0.0;  // largest |d strain| [-]
   double residual = 0.0;       // backward-Euler force residual / load scale (reported only) [-]
-  double step_error = 0.0;     // step-doubling error / step displacement [-]
+  double step_error = 0.0;     // step-doubling error / step displacement [-] (0 if not checked)
+  double bond_load_ratio = 0.0;  // max k_n L0 |d strain| / max |R dx / dt| [-]
   int crossing_sphere = -1;    // a sphere whose centre ended in or crossed a wall, or -1
   std::string problem;         // "" if within the limits
 };

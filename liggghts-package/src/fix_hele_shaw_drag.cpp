@@ -45,6 +45,7 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *instance, int narg, char **arg)
   hsrod::SceneSpec scene;
   hsrod::ModelSpec model;
   parse_keywords(narg, arg, scene, model);
+  check_confinement_before_solve(scene, model);
   try {
     hydro_.reset(new hsrod::RodHydrodynamics(scene, model));
   } catch (const std::exception &e) {
@@ -82,6 +83,40 @@ FixHeleShawDrag::~FixHeleShawDrag() {
 
 const hsrod::BackgroundFlow &FixHeleShawDrag::flow() const { return hydro_->flow(); }
 
+// beta = d / H against the coefficient table before the background flow is
+// solved (issue 10: at beta 0.95 the grid solve ran before the beta check).
+// Spheres created later are checked in init() by the facade.
+void FixHeleShawDrag::check_confinement_before_solve(const hsrod::SceneSpec &scene, const hsrod::ModelSpec &model) {
+  double dmin = 1e300;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) dmin = std::min(dmin, 2.0 * atom->radius[i]);
+  double d = 1e300;
+  MPI_Allreduce(&dmin, &d, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (d > 1e299) return;  // no spheres yet
+  const double beta = d / scene.gap_height;
+  char msg[512];
+  if (!(beta < 1.0)) {
+    std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: sphere diameter %g m >= gap height %g m (beta = d/H must be < 1)",
+                  d, scene.gap_height);
+    error->all(FLERR, msg);
+  }
+  try {
+    const hsrod::ConfinementTable table = model.coefficients_file.empty()
+                                              ? hsrod::ConfinementTable::default_table()
+                                              : hsrod::ConfinementTable::read(model.coefficients_file);
+    if (!(beta >= table.rows().front().beta && beta <= table.max_beta())) {
+      std::snprintf(msg, sizeof(msg),
+                    "fix hele_shaw/drag: confinement beta = d/H = %g outside the coefficient table's range [%g, %g] "
+                    "(d = %g m, H = %g m); checked before the background flow is solved",
+                    beta, table.rows().front().beta, table.max_beta(), d, scene.gap_height);
+      error->all(FLERR, msg);
+    }
+  } catch (const std::exception &e) {
+    std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s", e.what());
+    error->all(FLERR, msg);
+  }
+}
+
 void FixHeleShawDrag::report(const char *line) {
   if (comm->me != 0) return;
   if (screen) fputs(line, screen);
@@ -106,6 +141,24 @@ void FixHeleShawDrag::init() {
     char msg[256];
     std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %d sphere centre(s) outside the channel planform or gap",
                   total_outside);
+    error->all(FLERR, msg);
+  }
+  // Every sphere must fit between the gap walls (issue 10: a rod centred in
+  // the lower wall z = 0 was accepted and pushed out).
+  const double bottom = hydro_->gap_bottom(), top = bottom + hydro_->geometry().gap_height();
+  int overlapping = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double z = atom->x[i][2], r = atom->radius[i];
+    if (z - r < bottom - 1e-9 * r || z + r > top + 1e-9 * r) overlapping++;
+  }
+  int total_overlapping = 0;
+  MPI_Allreduce(&overlapping, &total_overlapping, 1, MPI_INT, MPI_SUM, world);
+  if (total_overlapping > 0) {
+    char msg[256];
+    std::snprintf(msg, sizeof(msg),
+                  "fix hele_shaw/drag: %d sphere(s) overlap the gap walls: centres must lie in [z_bottom + r, z_top - r] "
+                  "= [%g + r, %g - r] m", total_overlapping, bottom, top);
     error->all(FLERR, msg);
   }
 }

@@ -68,6 +68,7 @@ class FixHeleShawDrag : public Fix {
   enum LoadColumn { TOTAL_X = 0, DRIVING_X = 3, FRICTION_X = 6, TORQUE_X = 9, N_LOAD_COLUMNS = 12 };
 
  private:
+  void check_confinement_before_solve(const hsrod::SceneSpec &scene, const hsrod::ModelSpec &model);
   std::unique_ptr<hsrod::RodHydrodynamics> hydro_;
   bool applied_by_integrator_;
   double **hydro_force_;          // per atom, last load: total, driving, friction [N], torque [N m] (LoadColumn)

@@ -78,7 +78,7 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
       scene.origin = Eigen::Vector3d(number(1), number(2), number(3));
     } else if (strcmp(key, "pore") == 0) {
       need(values = 2);
-      scene.pore_radius = number(1);
+      scene.pore_radius = positive("pore radius R", number(1), " m (and < W/2)");
       scene.pore_x = number(2);
     } else if (strcmp(key, "cylinder") == 0) {
       need(values = 3);
@@ -155,4 +155,11 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
   }
   if (!have_inflow)
     error->all(FLERR, "Illegal fix hele_shaw/drag command: missing inflow (mean_velocity, flow_rate or reynolds)");
+  if (scene.pore_radius > 0.0 && !(scene.pore_radius < 0.5 * scene.width)) {
+    char msg[256];
+    std::snprintf(msg, sizeof(msg),
+                  "fix hele_shaw/drag: pore radius R = %g m must be in (0, W/2) = (0, %g) m (the pore must stay open)",
+                  scene.pore_radius, 0.5 * scene.width);
+    error->all(FLERR, msg);
+  }
 }

@@ -77,6 +77,13 @@ class FixRodBonds : public Fix, public RodBondRecords {
   // fix neither moves orientations nor adds bond loads; the integrator
   // writes the new orientations back.
   void set_integrated_implicitly(bool flag) { integrated_implicitly_ = flag; }
+  // Under fix rod/implicit the bonds are evaluated by the integrator, which
+  // reports here what f_ID shows: this processor's share of the elastic
+  // energy [J] and the largest |axial strain| [-] after the step.
+  void set_implicit_bond_state(double elastic_energy, double max_strain) {
+    elastic_energy_ = elastic_energy;
+    max_strain_ = max_strain;
+  }
   void set_orientation(int i, const Eigen::Quaterniond &q);
 
  private:

@@ -2,7 +2,8 @@
    hsrod - fix rod/implicit (see fix_rod_implicit.h)
 
    fix ID group rod/implicit bonds BONDS-ID drag DRAG-ID [walls yes|no]
-                             [max_displacement f]
+                             [max_displacement f] [accuracy_guard yes|no]
+                             [step_error f] [max_substeps N]
 ------------------------------------------------------------------------- */
 
 #include "fix_rod_implicit.h"
@@ -12,9 +13,10 @@
 #include "error.h"
 #include "fix_hele_shaw_drag.h"
 #include "fix_rod_bonds.h"
-#include "keyword_parsing.h"
 #include "force.h"
 #include "group.h"
+#include "keyword_parsing.h"
+#include "lmptype.h"
 #include "modify.h"
 #include "rod_assembly.h"
 #include "rod_gather.h"
@@ -41,7 +43,11 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       walls_(true),
       wall_friction_(0.0),
       slip_velocity_(1e-6),
-      max_displacement_(0.1),
+      max_displacement_(0.25),
+      guard_(true),
+      substeps_(0),
+      bond_strain_(0.0),
+      bond_energy_(0.0),
       largest_displacement_(0.0),
       wall_force_(0.0),
       contacts_(0),
@@ -80,13 +86,24 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       slip_velocity_ = parse_number(error, "fix rod/implicit", key, val);
       if (!(slip_velocity_ > 0.0)) error->all(FLERR, "fix rod/implicit: slip_velocity must be > 0 m/s");
     } else if (strcmp(key, "max_displacement") == 0) {
-      max_displacement_ = std::atof(val);
-      if (!(max_displacement_ > 0.0)) error->all(FLERR, "fix rod/implicit: max_displacement must be > 0 (fraction of d)");
+      max_displacement_ = parse_number(error, "fix rod/implicit", key, val);
+      if (!(max_displacement_ > 0.0 && max_displacement_ <= 10.0))
+        error->all(FLERR, "fix rod/implicit: max_displacement must be in (0, 10] sphere diameters per step");
+    } else if (strcmp(key, "accuracy_guard") == 0) {
+      guard_ = parse_yes_no(error, "fix rod/implicit", key, val);
+    } else if (strcmp(key, "step_error") == 0) {
+      limits_.max_step_error = parse_number(error, "fix rod/implicit", key, val);
+      if (!(limits_.max_step_error > 0.0 && limits_.max_step_error <= 1.0))
+        error->all(FLERR, "fix rod/implicit: step_error must be in (0, 1] (relative error of a step)");
+    } else if (strcmp(key, "max_substeps") == 0) {
+      limits_.max_substeps = parse_integer(error, "fix rod/implicit", key, val);
+      if (!(limits_.max_substeps >= 1 && limits_.max_substeps <= 1 << 20))
+        error->all(FLERR, "fix rod/implicit: max_substeps must be in [1, 1048576]");
     } else {
       char msg[256];
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix rod/implicit command: unknown keyword '%s' (expected bonds, drag, walls, "
-                    "wall_friction, slip_velocity, max_displacement)", key);
+                    "wall_friction, slip_velocity, max_displacement, accuracy_guard, step_error, max_substeps)", key);
       error->all(FLERR, msg);
     }
   }
@@ -95,8 +112,11 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
   bonds_->set_integrated_implicitly(true);
   drag_->set_applied_by_integrator(true);
   time_integrate = 1;
+  limits_.max_displacement = max_displacement_;
   vector_flag = 1;
-  size_vector = 3;  // [1] largest displacement per step / d, [2] wall force [N], [3] rods touching walls
+  // [1] largest displacement per step / d, [2] wall force [N], [3] rods touching walls,
+  // [4] most substeps of the accuracy guard, [5] largest |bond axial strain|, [6] bond energy [J]
+  size_vector = 6;
   extvector = 0;
   global_freq = 1;
   restart_global = 1;  // the rods' wall-contact records
@@ -105,6 +125,11 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
 int FixRodImplicit::setmask() { return INITIAL_INTEGRATE; }
 
 void FixRodImplicit::init() {
+  if (!(std::isfinite(update->dt) && update->dt > 0.0)) {
+    char msg[256];
+    std::snprintf(msg, sizeof(msg), "fix rod/implicit: timestep %g s must be finite and > 0 s", update->dt);
+    error->all(FLERR, msg);
+  }
   // No other integrator may move these atoms.
   for (int f = 0; f < modify->nfix; f++) {
     Fix *other = modify->fix[f];
@@ -153,8 +178,8 @@ void FixRodImplicit::initial_integrate(int) {
   walls.friction_coefficient = wall_friction_;
   walls.slip_velocity = slip_velocity_;
 
-  double largest = 0.0, wall_force = 0.0;
-  int contacts = 0;
+  double largest = 0.0, wall_force = 0.0, strain = 0.0, energy = 0.0;
+  int contacts = 0, substeps = 1;
   for (const auto &entry : gather.rods) {
     const std::vector<GatheredSphere> &spheres = entry.second;
     const int n = static_cast<int>(spheres.size());
@@ -171,8 +196,35 @@ void FixRodImplicit::initial_integrate(int) {
 
     const std::vector<Eigen::Vector3d> before = rod.positions;
     // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
-    const auto result =
-        solvers_by_rod_[entry.first].step(rod, drag, dt, walls_ ? &hydro.geometry() : nullptr, &walls);
+    const hsrod::ChannelGeometry *scene_walls = walls_ ? &hydro.geometry() : nullptr;
+    hsrod::OverdampedRodSolver &solver = solvers_by_rod_[entry.first];
+    hsrod::OverdampedStepResult result;
+    if (guard_) {
+      // Accuracy guard: substeps (drag re-evaluated at each) or a refusal.
+      auto drag_at = [&](const hsrod::OverdampedRod &moved, hsrod::RodDrag &out) {
+        hsrod::RodGeometry g = geometry;
+        g.positions = moved.positions;
+        hydro.loads(g, out);
+      };
+      try {
+        hsrod::GuardedStepReport report =
+            hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_);
+        result = std::move(report.result);
+        substeps = std::max(substeps, report.substeps);
+        strain = std::max(strain, report.largest_bond_strain);
+        energy += report.bond_energy;
+      } catch (const std::exception &e) {
+        char msg[768];
+        std::snprintf(msg, sizeof(msg), "fix rod/implicit: rod %d at step " BIGINT_FORMAT ": %s", entry.first,
+                      update->ntimestep, e.what());
+        error->all(FLERR, msg);
+      }
+    } else {
+      result = solver.step(rod, drag, dt, scene_walls, &walls);
+      const auto strain_energy = hsrod::bond_strain_and_energy(rod);
+      strain = std::max(strain, strain_energy.first);
+      energy += strain_energy.second;
+    }
     largest = std::max(largest, result.largest_displacement / geometry.sphere_diameter);
     wall_force += result.wall_force;
     if (result.wall_contact) contacts++;
@@ -201,7 +253,12 @@ void FixRodImplicit::initial_integrate(int) {
   largest_displacement_ = largest;
   wall_force_ = wall_force;
   contacts_ = contacts;
-  if (largest > max_displacement_ && !warned_ && comm->me == 0) {
+  substeps_ = substeps;
+  bond_strain_ = strain;
+  bond_energy_ = energy;
+  // Rods are gathered whole on every processor: rank 0 holds the energy.
+  bonds_->set_implicit_bond_state(comm->me == 0 ? energy : 0.0, strain);
+  if (!guard_ && largest > max_displacement_ && !warned_ && comm->me == 0) {
     char msg[256];
     std::snprintf(msg, sizeof(msg),
                   "fix rod/implicit: a sphere moved %.3g diameters in one step (> max_displacement %.3g): the step "
@@ -214,7 +271,10 @@ void FixRodImplicit::initial_integrate(int) {
 double FixRodImplicit::compute_vector(int n) {
   if (n == 0) return largest_displacement_;
   if (n == 1) return wall_force_;
-  return contacts_;
+  if (n == 2) return contacts_;
+  if (n == 3) return substeps_;
+  if (n == 4) return bond_strain_;
+  return bond_energy_;
 }
 
 // Global restart data: [count, then per rod: molecule, touching, ever touched, wall force, largest wall force].

@@ -17,6 +17,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 
 #include "fix.h"
 
+#include "dynamics/guarded_step.h"
 #include "dynamics/overdamped_rod_step.h"
 
 #include <map>
@@ -54,7 +55,12 @@ class FixRodImplicit : public Fix {
   bool walls_;                    // contacts with the scene's walls
   double wall_friction_;          // Coulomb wall friction coefficient mu_fr [-] (0: frictionless)
   double slip_velocity_;          // regularisation: below it friction is viscous [m/s]
-  double max_displacement_;       // accuracy warning threshold, fraction of d per step [-]
+  double max_displacement_;       // accuracy guard: largest displacement per (sub)step [d]
+  bool guard_;                    // accuracy guard on (dynamics/guarded_step.h)
+  hsrod::StepGuardLimits limits_; // its limits
+  int substeps_;                  // last step, most substeps any rod took
+  double bond_strain_;            // last step, largest |axial strain| [-]
+  double bond_energy_;            // last step, elastic energy of all rods' bonds [J]
   double largest_displacement_;   // last step, max |dx| / d [-]
   double wall_force_;             // last step, sum of wall contact forces [N]
   int contacts_;                  // last step, number of rods touching a wall

@@ -2,6 +2,9 @@
 
 #include "error.h"
 
+#include <cerrno>
+#include <climits>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -16,17 +19,24 @@ void refuse(Error *error, const char *style, const char *keyword, const char *ex
 }
 }  // namespace
 
+// nan, inf and out-of-range values are refused here, once for every
+// keyword of every style (issue 10: `angle nan`, `youngs_modulus inf` ran).
 double parse_number(Error *error, const char *style, const char *keyword, const char *text) {
   char *end = nullptr;
+  errno = 0;
   const double value = std::strtod(text, &end);
   if (end == text || *end != '\0') refuse(error, style, keyword, "a number", text);
+  if (!std::isfinite(value) || errno == ERANGE) refuse(error, style, keyword, "a finite number", text);
   return value;
 }
 
 int parse_integer(Error *error, const char *style, const char *keyword, const char *text) {
   char *end = nullptr;
+  errno = 0;
   const long value = std::strtol(text, &end, 10);
   if (end == text || *end != '\0') refuse(error, style, keyword, "an integer", text);
+  if (errno == ERANGE || value > INT_MAX || value < INT_MIN)
+    refuse(error, style, keyword, "an integer within +-2147483647", text);
   return static_cast<int>(value);
 }
 

@@ -15,7 +15,9 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <string>
+#include <typeinfo>
 
 using namespace LAMMPS_NS;
 
@@ -31,18 +33,33 @@ int main(int argc, char **argv) {
   // must reach a pipe or a log collector, not die in a buffer.
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   MPI_Init(&argc, &argv);
-  LAMMPS *lammps = new LAMMPS(argc, argv, MPI_COMM_WORLD);
-  hsrod::register_styles(lammps);
-  // -var hsrod_screen FILE: screen a resolved CFD-DEM script (screen/screen_mode.h).
-  const std::string screen_scene = hsrod::screen::requested_scene(argc, argv);
-  if (!screen_scene.empty() && !hsrod::screen::begin(lammps, screen_scene)) {
+  // The one exception guard at the glue boundary: the styles turn the
+  // physics' exceptions into error->all() messages; anything that still
+  // escapes (std::bad_alloc, a bug) ends the run with an ERROR line and a
+  // non-zero exit code on every rank, never an abort with a core dump.
+  int rc = 0;
+  try {
+    LAMMPS *lammps = new LAMMPS(argc, argv, MPI_COMM_WORLD);
+    hsrod::register_styles(lammps);
+    // -var hsrod_screen FILE: screen a resolved CFD-DEM script (screen/screen_mode.h).
+    const std::string screen_scene = hsrod::screen::requested_scene(argc, argv);
+    if (!screen_scene.empty() && !hsrod::screen::begin(lammps, screen_scene)) {
+      rc = 1;
+    } else {
+      lammps->input->file();
+      if (!screen_scene.empty()) hsrod::screen::report(lammps);
+    }
     delete lammps;
-    MPI_Finalize();
-    return 1;
+  } catch (const std::exception &e) {
+    std::fprintf(stdout, "ERROR: hsrod: unexpected exception (%s): %s\n", typeid(e).name(), e.what());
+    std::fprintf(stderr, "ERROR: hsrod: unexpected exception (%s): %s\n", typeid(e).name(), e.what());
+    std::fflush(stdout);
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  } catch (...) {
+    std::fprintf(stdout, "ERROR: hsrod: unexpected non-standard exception\n");
+    std::fflush(stdout);
+    MPI_Abort(MPI_COMM_WORLD, 1);
   }
-  lammps->input->file();
-  if (!screen_scene.empty()) hsrod::screen::report(lammps);
-  delete lammps;
   MPI_Finalize();
-  return 0;
+  return rc;
 }

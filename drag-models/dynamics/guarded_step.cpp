@@ -205,7 +205,7 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
     using NewtonCheck = StepGuardLimits::NewtonCheck;
     const bool suspect = limits.newton_check == NewtonCheck::kAlways ||
                          (limits.newton_check == NewtonCheck::kWhenSuspect &&
-                          (a.bond_load_ratio > limits.suspect_bond_load || r.wall_contact));
+                          (a.bond_load_ratio > limits.suspect_bond_load || r.wall_contact || r.self_contact));
     if (a.problem.empty() && suspect) {
       // Step doubling: two steps of h/2 (drag re-evaluated at the midpoint).
       OverdampedRod half = current;
@@ -223,15 +223,21 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
       // (overlap time scale ~1e-8 s) is a near-discontinuity the step cannot
       // follow, and the error is bounded by the overlap limit instead.
       const double d = 2.0 * current.radii[0];
-      bool touching = false;
+      bool touching = r.wall_contact || r.self_contact;  // self-contact: the same Hertz impact
       if (geometry && walls) {
         const std::vector<char> a0 = contact_set(current, geometry, walls), a1 = contact_set(trial, geometry, walls);
-        touching = std::find(a0.begin(), a0.end(), 1) != a0.end() || std::find(a1.begin(), a1.end(), 1) != a1.end();
+        touching = touching || std::find(a0.begin(), a0.end(), 1) != a0.end() ||
+                   std::find(a1.begin(), a1.end(), 1) != a1.end();
       }
       const double floor = touching ? 0.5 * limits.max_overlap * d : 1e-6 * d * limits.max_step_error;
       a.step_error = difference / std::max(moved, floor / limits.max_step_error);
       if (!std::isfinite(a.step_error)) a.step_error = HUGE_VAL;
-      if (a.step_error > limits.max_step_error) {
+      const bool finest = level * 2 > limits.max_substeps;
+      if (a.step_error > limits.max_step_error && finest && !limits.refuse_unresolved_error) {
+        ++report.unresolved_substeps;
+        report.unresolved_error = std::max(report.unresolved_error, a.step_error);
+        trial = std::move(half);
+      } else if (a.step_error > limits.max_step_error) {
         std::ostringstream m;
         m.precision(3);
         m << "the linearised step's Newton error (step doubling) is " << a.step_error

@@ -49,6 +49,10 @@ struct StepGuardLimits {
   double suspect_bond_load = 0.05;  // [-]
   double max_overlap = 0.1;         // largest new overlap with a wall [sphere radii]
   int max_substeps = 1024;          // finest substep dt / max_substeps (a power of 2) [-]
+  // At the finest substep a step failing only the Newton-error check is
+  // refused (true) or accepted as its two half steps and counted in
+  // GuardedStepReport::unresolved_substeps for the caller to report (false).
+  bool refuse_unresolved_error = true;
   bool check_walls = true;          // refuse a sphere centre in or through a wall
 };
 
@@ -66,6 +70,8 @@ struct StepAssessment {
 struct GuardedStepReport {
   OverdampedStepResult result;  // over the whole dt: mean velocities, dt-weighted forces
   int substeps = 1;             // substeps taken
+  int unresolved_substeps = 0;  // finest substeps accepted above max_step_error (refuse_unresolved_error false)
+  double unresolved_error = 0.0;  // their largest step error [-]
   StepAssessment worst;         // largest figures over the accepted substeps
   double largest_bond_strain = 0.0;  // max |axial strain| after the step [-]
   double bond_energy = 0.0;          // elastic energy of all bonds after the step [J]

@@ -46,6 +46,8 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       max_displacement_(0.25),
       guard_(true),
       substeps_(0),
+      unresolved_(0),
+      unresolved_warned_(false),
       bond_strain_(0.0),
       bond_energy_(0.0),
       largest_displacement_(0.0),
@@ -113,10 +115,14 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
   drag_->set_applied_by_integrator(true);
   time_integrate = 1;
   limits_.max_displacement = max_displacement_;
+  // Displacement, strain and wall failures refuse the run; an unresolved
+  // Newton error at the finest substep is accepted with a warning and counted.
+  limits_.refuse_unresolved_error = false;
   vector_flag = 1;
   // [1] largest displacement per step / d, [2] wall force [N], [3] rods touching walls,
-  // [4] most substeps of the accuracy guard, [5] largest |bond axial strain|, [6] bond energy [J]
-  size_vector = 6;
+  // [4] most substeps of the accuracy guard, [5] largest |bond axial strain|, [6] bond energy [J],
+  // [7] substeps accepted with an unresolved Newton error (run total)
+  size_vector = 7;
   extvector = 0;
   global_freq = 1;
   restart_global = 1;  // the rods' wall-contact records
@@ -210,6 +216,18 @@ void FixRodImplicit::initial_integrate(int) {
         hsrod::GuardedStepReport report =
             hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_);
         result = std::move(report.result);
+        if (report.unresolved_substeps > 0 && !unresolved_warned_ && comm->me == 0) {
+          char msg[512];
+          std::snprintf(msg, sizeof(msg),
+                        "fix rod/implicit: rod %d at step " BIGINT_FORMAT ": %d substep(s) of dt/%d still differ from "
+                        "two half steps by %.3g of their displacement (step_error %.3g): accepted as the half steps; "
+                        "the motion is not resolved here (contact or buckling); reduce the timestep to check",
+                        entry.first, update->ntimestep, report.unresolved_substeps, limits_.max_substeps,
+                        report.unresolved_error, limits_.max_step_error);
+          error->warning(FLERR, msg);
+          unresolved_warned_ = true;
+        }
+        unresolved_ += report.unresolved_substeps;
         substeps = std::max(substeps, report.substeps);
         strain = std::max(strain, report.largest_bond_strain);
         energy += report.bond_energy;
@@ -274,7 +292,8 @@ double FixRodImplicit::compute_vector(int n) {
   if (n == 2) return contacts_;
   if (n == 3) return substeps_;
   if (n == 4) return bond_strain_;
-  return bond_energy_;
+  if (n == 5) return bond_energy_;
+  return unresolved_;
 }
 
 // Global restart data: [count, then per rod: molecule, touching, ever touched, wall force, largest wall force].

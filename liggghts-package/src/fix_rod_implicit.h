@@ -59,6 +59,8 @@ class FixRodImplicit : public Fix {
   bool guard_;                    // accuracy guard on (dynamics/guarded_step.h)
   hsrod::StepGuardLimits limits_; // its limits
   int substeps_;                  // last step, most substeps any rod took
+  long unresolved_;               // run total of substeps accepted with an unresolved Newton error
+  bool unresolved_warned_;
   double bond_strain_;            // last step, largest |axial strain| [-]
   double bond_energy_;            // last step, elastic energy of all rods' bonds [J]
   double largest_displacement_;   // last step, max |dx| / d [-]

@@ -1,0 +1,148 @@
+#!/usr/bin/env python3
+"""Stress and fuzz matrix for hsrod (issue 10, item 6).
+
+Runs build/hsrod on generated input scripts of the pore scene and classifies
+each case:
+  passed   exit code 0, every thermo value finite, no atom lost, the largest
+           bond strain below 0.5 and the rod inside the box;
+  refused  a non-zero exit code with an "ERROR:" line naming the problem;
+  failed   anything else: a crash (signal, no ERROR line), a hang past the
+           time bound, or exit code 0 with non-finite or lost output.
+Usage:  stress_matrix.py HSROD [--short] [--out RESULTS.md] [--jobs N]
+--short is the ctest subset (label `stress`, < 2 min); the default is the
+full matrix. Exit code 1 if any case failed.
+"""
+import argparse
+import concurrent.futures
+import itertools
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+SCENE = """units si
+atom_style hybrid granular molecular
+atom_modify map array sort 0 0
+boundary f f f
+newton off
+communicate single cutoff {cutoff} vel yes
+neighbor {skin} nsq
+region box block 0 600e-6 0 200e-6 0 {gap} units box
+create_box 1 box
+create_rod spheres {n} diameter {d} type 1 density 1170 centre {xc} 100e-6 {zc} angle {angle}
+fix bonds all rod/bonds youngs_modulus {E} timestep_check no
+fix drag all hele_shaw/drag reynolds 2 fluid_density 1170 pore 85e-6 300e-6 model {model} {extra_drag}
+fix step all rod/implicit bonds bonds drag drag
+compute shape all rod/shape
+thermo_style custom step f_step[1] f_step[4] f_step[5] c_shape[2]
+thermo {thermo}
+timestep {dt}
+run {steps}
+"""
+
+
+def scene(dt=4e-6, beta=0.15, E=15e6, n=10, model="local", angle=0, steps=50, **over):
+    d = 3e-6
+    gap = d / beta
+    p = dict(dt=dt, gap=gap, zc=gap / 2, E=E, n=n, d=d, model=model, angle=angle,
+             steps=steps, thermo=max(1, steps // 5), xc=max(100e-6, 0.6 * n * d + 10e-6),
+             cutoff=2 * d, skin=0.3 * d, extra_drag="")
+    p.update(over)
+    return SCENE.format(**p)
+
+
+def classify(hsrod, text, timeout):
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "in.case")
+        with open(path, "w") as f:
+            f.write(text)
+        env = dict(os.environ, HSROD_CACHE_DIR=os.path.join(tempfile.gettempdir(), "hsrod-stress-cache"))
+        try:
+            r = subprocess.run([hsrod, "-in", path, "-log", "none"], cwd=tmp, env=env,
+                               capture_output=True, text=True, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            return "failed", f"hang: no result within {timeout} s"
+    out = r.stdout + r.stderr
+    errors = [l for l in out.splitlines() if l.startswith("ERROR")]
+    if r.returncode != 0:
+        if errors and r.returncode > 0:
+            return "refused", errors[0][:160]
+        return "failed", f"rc {r.returncode} without a clean ERROR line"
+    if errors:
+        return "failed", "rc 0 but an ERROR line: " + errors[0][:120]
+    rows = re.findall(r"^\s*\d+\s+(.*)$", out, re.M)
+    values = []
+    for row in rows:
+        try:
+            values.append([float(v) for v in row.split()])
+        except ValueError:
+            pass
+    if not values:
+        return "failed", "rc 0 without thermo output"
+    if any(not math.isfinite(v) for row in values for v in row):
+        return "failed", "rc 0 with non-finite output"
+    if "Lost atoms" in out or "lost" in out.lower() and "atoms" in out.lower() and "WARNING" in out:
+        return "failed", "rc 0 with lost atoms"
+    strain = max(row[2] for row in values if len(row) > 2)
+    if strain > 0.5:
+        return "failed", f"rc 0 with bond strain {strain:.3g}"
+    x = values[-1][3] if len(values[-1]) > 3 else 0.0
+    if not (0.0 <= x <= 600e-6):
+        return "failed", f"rc 0 with the rod centre outside the box (x = {x:.3g} m)"
+    return "passed", f"strain {strain:.2g}, x {x * 1e6:.0f} um"
+
+
+def matrix(short):
+    cases = []
+    if short:
+        for dt, beta, E, n, model in [
+            (4e-6, 0.15, 15e6, 10, "local"), (1e-3, 0.15, 15e6, 10, "local"),
+            (4e-6, 0.85, 15e6, 10, "auto"), (4e-6, 0.95, 15e6, 10, "auto"),
+            (2e-6, 0.15, 1.5e12, 10, "nonlocal"), (1e-5, 0.3, 15e3, 5, "isotropic"),
+            (4e-6, 0.15, 15e6, 200, "auto"), (4e-6, 0.6, 15e9, 2, "local"),
+        ]:
+            cases.append((f"dt={dt} beta={beta} E={E} N={n} model={model}", scene(dt, beta, E, n, model, steps=20)))
+    else:
+        for dt, beta, E, n, model in itertools.product(
+                [2e-6, 1e-5, 1e-4, 1e-3], [0.05, 0.3, 0.6, 0.85, 0.95], [15e3, 15e6, 15e9, 1.5e12],
+                [2, 5, 50, 200], ["isotropic", "local", "nonlocal", "auto"]):
+            cases.append((f"dt={dt} beta={beta} E={E} N={n} model={model}", scene(dt, beta, E, n, model, steps=20)))
+    # Generated bad input: every numeric keyword of the scene x {nan, inf, 0, -1}.
+    bad = ["nan", "inf", "0", "-1"]
+    keys = {"E": "youngs_modulus", "angle": "angle", "dt": "timestep", "xc": "centre x", "zc": "centre z",
+            "gap": "box height"}
+    for key, value in itertools.product(keys if not short else ["E", "angle", "dt"], bad if not short else ["nan", "-1"]):
+        cases.append((f"{keys[key]} = {value}", scene(steps=5, **{key: value})))
+    return cases
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("hsrod")
+    ap.add_argument("--short", action="store_true")
+    ap.add_argument("--out")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--timeout", type=float, default=120.0)
+    a = ap.parse_args()
+    a.hsrod = os.path.abspath(a.hsrod)
+    cases = matrix(a.short)
+    with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
+        results = list(pool.map(lambda c: (c[0],) + classify(a.hsrod, c[1], a.timeout), cases))
+    counts = {k: sum(1 for r in results if r[1] == k) for k in ("passed", "refused", "failed")}
+    lines = [f"| {name} | {kind} | {why} |" for name, kind, why in results]
+    table = ["| case | outcome | detail |", "| --- | --- | --- |"] + lines
+    summary = (f"cases {len(results)}, passed {counts['passed']}, refused with a clear error "
+               f"{counts['refused']}, failed {counts['failed']}")
+    print("\n".join(table))
+    print(summary)
+    if a.out:
+        with open(a.out, "w") as f:
+            f.write("# Stress matrix results (tests/stress/stress_matrix.py)\n\n" + summary + "\n\n" +
+                    "\n".join(table) + "\n")
+    return 1 if counts["failed"] else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

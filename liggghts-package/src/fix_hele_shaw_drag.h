@@ -75,6 +75,7 @@ class FixHeleShawDrag : public Fix {
   double total_force_[3];         // on the group [N]
   int force_flag_;
   bool timestep_check_;           // explicit mode: refuse dt above the drag limit
+  bool placement_check_;          // refuse spheres outside the fluid / in the gap walls at init
   double explicit_limit_;         // 2 m / zeta_max [s]
   bool limit_reported_;           // the limit is printed once, not per run
 

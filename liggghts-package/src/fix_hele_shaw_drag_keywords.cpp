@@ -142,12 +142,15 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
     } else if (strcmp(key, "timestep_check") == 0) {
       need(1);
       timestep_check_ = parse_yes_no(error, kStyle, key, arg[iarg + 1]);
+    } else if (strcmp(key, "placement_check") == 0) {
+      need(1);
+      placement_check_ = parse_yes_no(error, kStyle, key, arg[iarg + 1]);
     } else {
       char msg[512];
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix hele_shaw/drag command: unknown keyword '%s' (expected channel, origin, pore, "
                     "cylinder, viscosity, fluid_density, mean_velocity, flow_rate, reynolds, model, tolerance, "
-                    "coefficients, section, inertia, timestep_check, window_cells, window_margin, window_update, "
+                    "coefficients, section, inertia, timestep_check, placement_check, window_cells, window_margin, window_update, "
                     "window_every)", key);
       error->all(FLERR, msg);
     }

@@ -100,7 +100,7 @@ void FixScreenCoupling::post_create() {
   }
   std::snprintf(line, sizeof line,
                 "fix hsrod_screen_drag %s hele_shaw/drag channel %.12g %.12g %.12g origin %.12g %.12g %.12g%s "
-                "viscosity %.12g fluid_density %.12g mean_velocity %.12g model auto timestep_check no",
+                "viscosity %.12g fluid_density %.12g mean_velocity %.12g model auto timestep_check no placement_check no",
                 state.group.c_str(), L, W, H, domain->boxlo[0], domain->boxlo[1], domain->boxlo[2], pore.c_str(),
                 s.viscosity, s.fluid_density, s.mean_velocity);
   add_fix_line(line);

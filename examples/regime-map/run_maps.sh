@@ -11,7 +11,9 @@
 #           E 15 kPa - 15 MPa (4 values) x L_rod/d_pore 1 - 5 (step 1)   [coarse: see README]
 # Usage: bash run_maps.sh [fig10a fig11a fig10b]   (default: all three)
 # Environment: WORKERS (default 2; the farm runs WORKERS + 1 MPI ranks),
-# MODEL (drag model, default local = level 2), BUILD (default ../../build).
+# MODEL (drag model, default local = level 2), BUILD (default ../../build),
+# RETRY_FAILED=1 (drop the failed rows of an existing <map>.csv first, so the
+# resumed sweep runs only those cases again, e.g. after a code fix).
 # Each map goes to <name>.csv (resumable: run the same command again after an
 # interruption) and <name>.png; the time of each sweep to times.txt.
 set -euo pipefail
@@ -30,6 +32,20 @@ run() {  # run <name> <sweep arguments...>
   local name=$1
   shift
   local start
+  if [ "${RETRY_FAILED:-0}" = 1 ] && [ -f "$name.csv" ]; then
+    /usr/bin/python3 - "$name.csv" <<'PY'
+import csv, os, sys
+path = sys.argv[1]
+with open(path, newline="") as f:
+    rows = list(csv.reader(f))
+status = rows[0].index("status")
+kept = [rows[0]] + [r for r in rows[1:] if len(r) == len(rows[0]) and r[status] == "ok"]
+with open(path + ".tmp", "w", newline="") as f:
+    csv.writer(f, lineterminator="\n").writerows(kept)
+os.replace(path + ".tmp", path)
+print(f"{path}: {len(rows) - len(kept)} failed row(s) dropped, {len(kept) - 1} kept")
+PY
+  fi
   start=$(date +%s.%N)
   "${sweep[@]}" --in "$here/../clogging/in.clogging" --workdir "$here/../clogging" --var model "$model" "$@" "${measures[@]}" \
     --output "$here/$name.csv" | tail -2

@@ -12,6 +12,7 @@
 # Usage: bash run_maps.sh [fig10a fig11a fig10b]   (default: all three)
 # Environment: WORKERS (default 2; the farm runs WORKERS + 1 MPI ranks),
 # MODEL (drag model, default local = level 2), BUILD (default ../../build),
+# CASE_TIMEOUT (seconds of wall time per case, default 0 = none),
 # RETRY_FAILED=1 (drop the failed rows of an existing <map>.csv first, so the
 # resumed sweep runs only those cases again, e.g. after a code fix).
 # Each map goes to <name>.csv (resumable: run the same command again after an
@@ -48,7 +49,7 @@ PY
   fi
   start=$(date +%s.%N)
   "${sweep[@]}" --in "$here/../clogging/in.clogging" --workdir "$here/../clogging" --var model "$model" "$@" "${measures[@]}" \
-    --output "$here/$name.csv" | tail -2
+    --case-timeout "${CASE_TIMEOUT:-0}" --output "$here/$name.csv" | tail -2
   echo "$name $(/usr/bin/python3 -c "print(round($(date +%s.%N) - $start, 1))") s wall, $workers workers, load $(cut -d' ' -f1-3 /proc/loadavg)" \
     | tee -a times.txt
 }

@@ -13,6 +13,7 @@
 #include "update.h"
 
 #include "fix_rod_bonds.h"
+#include "implicit_partners.h"
 #include "rod_assembly.h"
 #include "rod_gather.h"
 
@@ -39,6 +40,7 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *instance, int narg, char **arg)
       applied_by_integrator_(false),
       hydro_force_(nullptr),
       force_flag_(0),
+      force_step_(-1),
       timestep_check_(true),
       placement_check_(true),
       explicit_limit_(0.0),
@@ -131,6 +133,8 @@ void FixHeleShawDrag::report(const char *line) {
 int FixHeleShawDrag::setmask() { return POST_FORCE; }
 
 void FixHeleShawDrag::init() {
+  // Whether a fix rod/implicit applies this drag in its step (decided here, every run).
+  applied_by_integrator_ = implicit_integrator_of(modify, error, id) != nullptr;
   if (!hydro_->has_model()) choose_model();
 
   if (!placement_check_) return;
@@ -301,13 +305,15 @@ void FixHeleShawDrag::store_loads(int i, const Eigen::Vector3d &driving, const E
 
 double FixHeleShawDrag::compute_vector(int n) {
   if (n == 3) return hydro_->has_model() ? hydro_->model().level() : 0;
-  if (applied_by_integrator_ && force_flag_ == 0) {
+  // Implicit mode: the integrator stores the loads each step; summed once per step.
+  if (applied_by_integrator_ && (force_flag_ == 0 || force_step_ != update->ntimestep)) {
     double local[3] = {0, 0, 0};
     for (int i = 0; i < atom->nlocal; i++)
       if (atom->mask[i] & groupbit)
         for (int a = 0; a < 3; a++) local[a] += hydro_force_[i][a];
     MPI_Allreduce(local, total_force_, 3, MPI_DOUBLE, MPI_SUM, world);
     force_flag_ = 1;
+    force_step_ = update->ntimestep;
   }
   return total_force_[n];
 }

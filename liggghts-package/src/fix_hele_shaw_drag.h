@@ -57,9 +57,10 @@ class FixHeleShawDrag : public Fix {
   const hsrod::BackgroundFlow &flow() const;
   double explicit_drag_limit() const { return explicit_limit_; }  // 2 m / zeta_max [s], from setup
 
-  // For fix rod/implicit, which applies the drag inside its implicit step:
-  // this fix then adds no force and reports the force stored per atom.
-  void set_applied_by_integrator(bool flag) { applied_by_integrator_ = flag; }
+  // Under a fix rod/implicit that names this fix (looked up at init(),
+  // implicit_partners.h) the drag is applied inside the implicit step: this
+  // fix then adds no force and reports the loads the integrator stores.
+  bool applied_by_integrator() const { return applied_by_integrator_; }
   // Stores the load on local atom i for output: driving force and total
   // hydrodynamic force [N] (friction = total - driving = -(R v)), torque [N m].
   void store_loads(int i, const Eigen::Vector3d &driving, const Eigen::Vector3d &total, const Eigen::Vector3d &torque);
@@ -74,6 +75,7 @@ class FixHeleShawDrag : public Fix {
   double **hydro_force_;          // per atom, last load: total, driving, friction [N], torque [N m] (LoadColumn)
   double total_force_[3];         // on the group [N]
   int force_flag_;
+  bigint force_step_;             // step at which total_force_ was summed (implicit mode)
   bool timestep_check_;           // explicit mode: refuse dt above the drag limit
   bool placement_check_;          // refuse spheres outside the fluid / in the gap walls at init
   double explicit_limit_;         // 2 m / zeta_max [s]

@@ -13,7 +13,9 @@
 #include "keyword_parsing.h"
 #include "force.h"
 #include "group.h"
+#include "implicit_partners.h"
 #include "memory.h"
+#include "modify.h"
 #include "neighbor.h"
 #include "update.h"
 
@@ -160,6 +162,8 @@ int FixRodBonds::setmask() {
 /* ---------------------------------------------------------------------- */
 
 void FixRodBonds::init() {
+  // Whether a fix rod/implicit integrates these bonds (decided here, every run).
+  integrated_implicitly_ = implicit_integrator_of(modify, error, id) != nullptr;
   if (bond_set_.damping_ratio > 0.0 && !comm->ghost_velocity)
     error->all(FLERR, "fix rod/bonds: damping > 0 needs ghost velocities: add 'communicate single vel yes'");
   compute_stability_limits();

@@ -73,10 +73,11 @@ class FixRodBonds : public Fix, public RodBondRecords {
   Eigen::Quaterniond orientation(int i) const override;
   std::vector<GatheredBond> rest_states(int i) const override;
 
-  // For fix rod/implicit, which integrates the rods itself. While set, this
-  // fix neither moves orientations nor adds bond loads; the integrator
-  // writes the new orientations back.
-  void set_integrated_implicitly(bool flag) { integrated_implicitly_ = flag; }
+  // Under a fix rod/implicit that names this fix (looked up at init(),
+  // implicit_partners.h) this fix neither moves orientations nor adds bond
+  // loads; the integrator writes the new orientations back (set_orientation)
+  // and reports the bonds' state (set_implicit_bond_state).
+  bool integrated_implicitly() const { return integrated_implicitly_; }
   // Under fix rod/implicit the bonds are evaluated by the integrator, which
   // reports here what f_ID shows: this processor's share of the elastic
   // energy [J] and the largest |axial strain| [-] after the step.

@@ -62,22 +62,10 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       error->all(FLERR, msg);
     }
     const char *key = arg[iarg], *val = arg[iarg + 1];
-    if (strcmp(key, "bonds") == 0 || strcmp(key, "drag") == 0) {
-      const int f = modify->find_fix(val);
-      if (f < 0) {
-        char msg[256];
-        std::snprintf(msg, sizeof(msg), "fix rod/implicit: %s fix '%s' not found (define it before this fix)", key, val);
-        error->all(FLERR, msg);
-      }
-      const bool is_bonds = strcmp(key, "bonds") == 0;
-      if (is_bonds) bonds_ = dynamic_cast<FixRodBonds *>(modify->fix[f]);
-      else drag_ = dynamic_cast<FixHeleShawDrag *>(modify->fix[f]);
-      if (is_bonds ? !bonds_ : !drag_) {
-        char msg[256];
-        std::snprintf(msg, sizeof(msg), "fix rod/implicit: fix '%s' is not a %s fix", val,
-                      is_bonds ? "rod/bonds" : "hele_shaw/drag");
-        error->all(FLERR, msg);
-      }
+    if (strcmp(key, "bonds") == 0) {
+      bonds_id_ = val;
+    } else if (strcmp(key, "drag") == 0) {
+      drag_id_ = val;
     } else if (strcmp(key, "walls") == 0) {
       if (strcmp(val, "yes") != 0 && strcmp(val, "no") != 0) error->all(FLERR, "fix rod/implicit: walls expects yes or no");
       walls_ = strcmp(val, "yes") == 0;
@@ -109,10 +97,12 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       error->all(FLERR, msg);
     }
   }
-  if (!bonds_) error->all(FLERR, "Illegal fix rod/implicit command: missing required keyword bonds");
-  if (!drag_) error->all(FLERR, "Illegal fix rod/implicit command: missing required keyword drag");
-  bonds_->set_integrated_implicitly(true);
-  drag_->set_applied_by_integrator(true);
+  if (bonds_id_.empty()) error->all(FLERR, "Illegal fix rod/implicit command: missing required keyword bonds");
+  if (drag_id_.empty()) error->all(FLERR, "Illegal fix rod/implicit command: missing required keyword drag");
+  // The partners must exist now (a script error is reported at its line);
+  // they are looked up again at every init() and decide there themselves
+  // that this fix integrates their work (implicit_partners.h).
+  resolve_partners();
   time_integrate = 1;
   limits_.max_displacement = max_displacement_;
   // Displacement, strain and wall failures refuse the run; an unresolved
@@ -130,7 +120,34 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
 
 int FixRodImplicit::setmask() { return INITIAL_INTEGRATE; }
 
+bool FixRodImplicit::names_partner(const char *fix_id) const { return bonds_id_ == fix_id || drag_id_ == fix_id; }
+
+// The partner fixes by ID: an error if one was removed (unfix) or replaced
+// by a fix of another style since this fix was defined.
+void FixRodImplicit::resolve_partners() {
+  const std::string *ids[2] = {&bonds_id_, &drag_id_};
+  const char *keys[2] = {"bonds", "drag"}, *styles[2] = {"rod/bonds", "hele_shaw/drag"};
+  for (int k = 0; k < 2; k++) {
+    const int f = modify->find_fix(ids[k]->c_str());
+    Fix *partner = f < 0 ? nullptr : modify->fix[f];
+    if (!partner) {
+      char msg[256];
+      std::snprintf(msg, sizeof(msg), "fix rod/implicit: %s fix '%s' not found (define it before this fix; "
+                    "unfix this fix before its %s fix)", keys[k], ids[k]->c_str(), keys[k]);
+      error->all(FLERR, msg);
+    }
+    if (k == 0) bonds_ = dynamic_cast<FixRodBonds *>(partner);
+    else drag_ = dynamic_cast<FixHeleShawDrag *>(partner);
+    if (k == 0 ? !bonds_ : !drag_) {
+      char msg[256];
+      std::snprintf(msg, sizeof(msg), "fix rod/implicit: fix '%s' is not a %s fix", ids[k]->c_str(), styles[k]);
+      error->all(FLERR, msg);
+    }
+  }
+}
+
 void FixRodImplicit::init() {
+  resolve_partners();
   if (!(std::isfinite(update->dt) && update->dt > 0.0)) {
     char msg[256];
     std::snprintf(msg, sizeof(msg), "fix rod/implicit: timestep %g s must be finite and > 0 s", update->dt);

@@ -21,6 +21,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 #include "dynamics/overdamped_rod_step.h"
 
 #include <map>
+#include <string>
 
 namespace LAMMPS_NS {
 
@@ -41,6 +42,9 @@ class FixRodImplicit : public Fix {
   }
 
   FixRodImplicit(class LAMMPS *, int, char **);
+  // Whether this fix integrates the work of fix `fix_id` (its bonds or drag
+  // fix); the partners ask at their init() (implicit_partners.h).
+  bool names_partner(const char *fix_id) const;
   int setmask();
   void init();
   void setup(int);
@@ -50,7 +54,8 @@ class FixRodImplicit : public Fix {
   void restart(char *);
 
  private:
-  class FixRodBonds *bonds_;
+  std::string bonds_id_, drag_id_;  // the partner fixes, by ID
+  class FixRodBonds *bonds_;        // resolved from the IDs at every init()
   class FixHeleShawDrag *drag_;
   bool walls_;                    // contacts with the scene's walls
   double wall_friction_;          // Coulomb wall friction coefficient mu_fr [-] (0: frictionless)
@@ -74,6 +79,7 @@ class FixRodImplicit : public Fix {
   // the contact records above are written (write_restart).
   std::map<int, hsrod::OverdampedRodSolver> solvers_by_rod_;
   bool reported_;                // set-up report printed once, not per run
+  void resolve_partners();
 };
 
 }  // namespace LAMMPS_NS

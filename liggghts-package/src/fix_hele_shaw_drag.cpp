@@ -281,13 +281,13 @@ void FixHeleShawDrag::post_force(int) {
       const int i = atom->map(rod.second[k].tag);
       if (i < 0 || i >= atom->nlocal) continue;
       const Eigen::Vector3d torque = drag.driving_torque[k] - drag.rotational_resistance[k] * rod.second[k].angular_velocity;
-      const Eigen::Vector3d force = forces.segment<3>(3 * k);
+      const Eigen::Vector3d sphere_force = forces.segment<3>(3 * k);  // [N]
       for (int a = 0; a < 3; a++) {
-        atom->f[i][a] += force[a];
+        atom->f[i][a] += sphere_force[a];
         atom->torque[i][a] += torque[a];
-        total[a] += force[a];
+        total[a] += sphere_force[a];
       }
-      store_loads(i, drag.driving_force[k], force, torque);
+      store_loads(i, drag.driving_force[k], sphere_force, torque);
     }
   }
   MPI_Allreduce(total, total_force_, 3, MPI_DOUBLE, MPI_SUM, world);

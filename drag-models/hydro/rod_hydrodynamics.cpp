@@ -9,7 +9,7 @@
 
 namespace hsrod {
 
-RodHydrodynamics::RodHydrodynamics(const SceneSpec& scene, const ModelSpec& model)
+RodHydrodynamics::RodHydrodynamics(const SceneSpec& scene, const ModelSpec& model, const SolveControl& flow_control)
     : spec_(model), gap_bottom_(scene.origin.z()) {
   if (spec_.name != "auto" && !find_model(spec_.name))
     throw std::invalid_argument("unknown model '" + spec_.name + "' (expected " + valid_model_names("auto") + ")");
@@ -32,6 +32,7 @@ RodHydrodynamics::RodHydrodynamics(const SceneSpec& scene, const ModelSpec& mode
   }
   BackgroundFlowOptions options;
   options.grid.include_inertia = scene.inertia;
+  options.grid.control = flow_control;
   flow_ = make_background_flow(*geometry_, scene.fluid, inflow, options);
   viscosity_ = scene.fluid.dynamic_viscosity;
 }

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "flow/background_flow.h"
+#include "flow/brinkman_grid_solver.h"
 #include "flow/fluid_properties.h"
 #include "geometry/channel_geometry.h"
 #include "hydro/auto_model_choice.h"
@@ -65,8 +66,10 @@ class RodHydrodynamics {
  public:
   // Builds the geometry and the background flow (a grid solve or the cache
   // for planforms with obstacles). Throws std::invalid_argument /
-  // std::runtime_error with a message naming the problem.
-  RodHydrodynamics(const SceneSpec& scene, const ModelSpec& model);
+  // std::runtime_error with a message naming the problem. `flow_control`:
+  // cancellation and progress hooks of a grid solve (a cancelled solve
+  // throws FlowSolveCancelled, flow/brinkman_grid_solver.h).
+  RodHydrodynamics(const SceneSpec& scene, const ModelSpec& model, const SolveControl& flow_control = {});
   ~RodHydrodynamics();
   RodHydrodynamics(const RodHydrodynamics&) = delete;
   RodHydrodynamics& operator=(const RodHydrodynamics&) = delete;

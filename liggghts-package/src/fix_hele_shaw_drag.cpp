@@ -10,6 +10,7 @@
 #include "error.h"
 #include "memory.h"
 #include "modify.h"
+#include "signal_handling.h"
 #include "update.h"
 
 #include "fix_rod_bonds.h"
@@ -53,8 +54,23 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *instance, int narg, char **arg)
   hsrod::ModelSpec model;
   parse_keywords(narg, arg, scene, model);
   check_confinement_before_solve(scene, model);
+  // Ctrl-C / SIGTERM during the background-flow solve (issue 10): hsrod's
+  // main installs LIGGGHTS' handler, which sets SignalHandler::request_quit;
+  // the solve polls it (between phases, every 20 ms in the factorisation)
+  // and stops. error->one: a rank that saw the signal must not wait for
+  // ranks still solving.
+  hsrod::SolveControl control;
+  control.cancel_requested = [] { return SignalHandler::request_quit; };
+  control.progress = [this](const std::string &line) {
+    report(("fix hele_shaw/drag: background flow: " + line + "\n").c_str());
+  };
   try {
-    hydro_.reset(new hsrod::RodHydrodynamics(scene, model));
+    hydro_.reset(new hsrod::RodHydrodynamics(scene, model, control));
+  } catch (const hsrod::FlowSolveCancelled &e) {
+    char msg[512];
+    std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: background flow solve interrupted (SIGINT/SIGTERM): %s",
+                  e.what());
+    error->one(FLERR, msg);
   } catch (const std::exception &e) {
     char msg[512];
     std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s", e.what());

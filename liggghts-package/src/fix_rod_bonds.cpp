@@ -234,9 +234,10 @@ void FixRodBonds::compute_bonds() {
       if (j < 0) {
         char msg[256];
         std::snprintf(msg, sizeof(msg),
-                      "fix rod/bonds: bond partner %d of atom %d missing on this proc; ghost atoms must "
-                      "reach one bond length: use 'communicate single cutoff <bond length + skin> vel yes'",
-                      partner_tag, atom->tag[i]);
+                      "fix rod/bonds: bond partner %d of atom %d missing on this proc: the partner was lost or "
+                      "deleted (%ld atoms now), or ghost atoms do not reach one bond length (use 'communicate "
+                      "single cutoff <bond length + skin> vel yes')",
+                      partner_tag, atom->tag[i], static_cast<long>(atom->natoms));
         error->one(FLERR, msg);
       }
       j = domain->closest_image(i, j);

@@ -10,6 +10,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_hele_shaw_drag.h"
 #include "fix_rod_bonds.h"
@@ -18,6 +19,7 @@
 #include "keyword_parsing.h"
 #include "lmptype.h"
 #include "modify.h"
+#include "rod_accounting.h"
 #include "rod_assembly.h"
 #include "rod_gather.h"
 #include "update.h"
@@ -111,40 +113,14 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
   vector_flag = 1;
   // [1] largest displacement per step / d, [2] wall force [N], [3] rods touching walls,
   // [4] most substeps of the accuracy guard, [5] largest |bond axial strain|, [6] bond energy [J],
-  // [7] substeps accepted with an unresolved Newton error (run total)
-  size_vector = 7;
+  // [7] substeps accepted with an unresolved Newton error (run total), [8] rods held at the box boundary
+  size_vector = 8;
   extvector = 0;
   global_freq = 1;
   restart_global = 1;  // the rods' wall-contact records
 }
 
 int FixRodImplicit::setmask() { return INITIAL_INTEGRATE; }
-
-bool FixRodImplicit::names_partner(const char *fix_id) const { return bonds_id_ == fix_id || drag_id_ == fix_id; }
-
-// The partner fixes by ID: an error if one was removed (unfix) or replaced
-// by a fix of another style since this fix was defined.
-void FixRodImplicit::resolve_partners() {
-  const std::string *ids[2] = {&bonds_id_, &drag_id_};
-  const char *keys[2] = {"bonds", "drag"}, *styles[2] = {"rod/bonds", "hele_shaw/drag"};
-  for (int k = 0; k < 2; k++) {
-    const int f = modify->find_fix(ids[k]->c_str());
-    Fix *partner = f < 0 ? nullptr : modify->fix[f];
-    if (!partner) {
-      char msg[256];
-      std::snprintf(msg, sizeof(msg), "fix rod/implicit: %s fix '%s' not found (define it before this fix; "
-                    "unfix this fix before its %s fix)", keys[k], ids[k]->c_str(), keys[k]);
-      error->all(FLERR, msg);
-    }
-    if (k == 0) bonds_ = dynamic_cast<FixRodBonds *>(partner);
-    else drag_ = dynamic_cast<FixHeleShawDrag *>(partner);
-    if (k == 0 ? !bonds_ : !drag_) {
-      char msg[256];
-      std::snprintf(msg, sizeof(msg), "fix rod/implicit: fix '%s' is not a %s fix", ids[k]->c_str(), styles[k]);
-      error->all(FLERR, msg);
-    }
-  }
-}
 
 void FixRodImplicit::init() {
   resolve_partners();
@@ -171,6 +147,9 @@ void FixRodImplicit::init() {
 }
 
 void FixRodImplicit::setup(int) {
+  // Rods are counted afresh at each run's start: what the script deleted
+  // between runs is its business; what goes missing during a run is an error.
+  census_ = RodCensus();
   if (reported_) return;
   reported_ = true;
   if (comm->me == 0) {
@@ -193,6 +172,7 @@ void FixRodImplicit::initial_integrate(int) {
   const hsrod::RodBondSet &bond_set = bonds_->bond_set();
   RodGather gather(lmp);
   gather.gather(groupbit, bonds_);
+  check_whole_rods(gather);
   const double dt = update->dt;
   hsrod::WallContactParameters walls;
   walls.youngs_modulus = bond_set.youngs_modulus;
@@ -206,6 +186,10 @@ void FixRodImplicit::initial_integrate(int) {
   for (const auto &entry : gather.rods) {
     const std::vector<GatheredSphere> &spheres = entry.second;
     const int n = static_cast<int>(spheres.size());
+    if (held_rods_.count(entry.first)) {
+      hold_rod(spheres);
+      continue;
+    }
     hsrod::OverdampedRod rod = overdamped_rod(spheres, bond_set);
     // Wall friction is linearised about the velocities of the last step
     // (this fix set them: v = dx/dt).
@@ -260,6 +244,25 @@ void FixRodImplicit::initial_integrate(int) {
       strain = std::max(strain, strain_energy.first);
       energy += strain_energy.second;
     }
+    // A step that would carry a sphere centre out of the box (the outlet,
+    // or any non-periodic face) is not taken: the rod is held where it is,
+    // whole, instead of LIGGGHTS dropping its spheres one by one.
+    const int face = leaving_face(rod.positions, domain->boxlo, domain->boxhi, domain->periodicity);
+    if (face >= 0) {
+      held_rods_.insert(entry.first);
+      if (comm->me == 0) {
+        char msg[320];
+        std::snprintf(msg, sizeof(msg),
+                      "fix rod/implicit: rod %d reached the box's %s face at step " BIGINT_FORMAT
+                      " (t = %g s): its next step would carry a sphere out of the box; the rod is held there, "
+                      "whole, from then on (measures stay at its exit)\n", entry.first, face_name(face),
+                      update->ntimestep, update->get_cur_time());
+        if (screen) fputs(msg, screen);
+        if (logfile) fputs(msg, logfile);
+      }
+      hold_rod(spheres);
+      continue;
+    }
     largest = std::max(largest, result.largest_displacement / geometry.sphere_diameter);
     wall_force += result.wall_force;
     if (result.wall_contact) contacts++;
@@ -310,33 +313,6 @@ double FixRodImplicit::compute_vector(int n) {
   if (n == 3) return substeps_;
   if (n == 4) return bond_strain_;
   if (n == 5) return bond_energy_;
-  return unresolved_;
-}
-
-// Global restart data: [count, then per rod: molecule, touching, ever touched, wall force, largest wall force].
-void FixRodImplicit::write_restart(FILE *fp) {
-  if (comm->me != 0) return;
-  std::vector<double> data{static_cast<double>(contacts_by_rod_.size())};
-  for (const auto &entry : contacts_by_rod_) {
-    const RodContactRecord &r = entry.second;
-    data.insert(data.end(), {static_cast<double>(entry.first), r.touching ? 1.0 : 0.0, r.ever_touched ? 1.0 : 0.0,
-                             r.wall_force, r.largest_wall_force});
-  }
-  const int size = static_cast<int>(data.size() * sizeof(double));
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(data.data(), sizeof(double), data.size(), fp);
-}
-
-void FixRodImplicit::restart(char *buf) {
-  const double *list = reinterpret_cast<const double *>(buf);
-  const int rods = static_cast<int>(list[0]);
-  contacts_by_rod_.clear();
-  for (int k = 0; k < rods; k++) {
-    const double *r = list + 1 + 5 * k;
-    RodContactRecord &record = contacts_by_rod_[static_cast<int>(r[0])];
-    record.touching = r[1] != 0.0;
-    record.ever_touched = r[2] != 0.0;
-    record.wall_force = r[3];
-    record.largest_wall_force = r[4];
-  }
+  if (n == 6) return unresolved_;
+  return static_cast<double>(held_rods_.size());
 }

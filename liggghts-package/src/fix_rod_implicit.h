@@ -17,10 +17,13 @@ FixStyle(rod/implicit,FixRodImplicit)
 
 #include "fix.h"
 
+#include "rod_accounting.h"
+
 #include "dynamics/guarded_step.h"
 #include "dynamics/overdamped_rod_step.h"
 
 #include <map>
+#include <set>
 #include <string>
 
 namespace LAMMPS_NS {
@@ -80,6 +83,10 @@ class FixRodImplicit : public Fix {
   std::map<int, hsrod::OverdampedRodSolver> solvers_by_rod_;
   bool reported_;                // set-up report printed once, not per run
   void resolve_partners();
+  RodCensus census_;             // spheres per rod as first seen: lost atoms are an error
+  std::set<int> held_rods_;      // rods held at the box boundary (their next step would leave the box)
+  void check_whole_rods(const class RodGather &gather);
+  void hold_rod(const std::vector<struct GatheredSphere> &spheres);
 };
 
 }  // namespace LAMMPS_NS

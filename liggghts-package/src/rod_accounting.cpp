@@ -1,0 +1,80 @@
+#include "rod_accounting.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace LAMMPS_NS {
+
+std::string RodCensus::check(const std::map<int, std::vector<GatheredSphere>> &rods) {
+  char msg[160];
+  for (const auto &known : spheres_by_rod_) {
+    const auto found = rods.find(known.first);
+    if (found == rods.end()) {
+      std::snprintf(msg, sizeof(msg), "rod %d (%d spheres) is gone", known.first, known.second);
+      return msg;
+    }
+    const int now = static_cast<int>(found->second.size());
+    if (now < known.second) {
+      std::snprintf(msg, sizeof(msg), "rod %d has %d of its %d spheres", known.first, now, known.second);
+      return msg;
+    }
+  }
+  for (const auto &rod : rods) {
+    int &count = spheres_by_rod_[rod.first];
+    count = std::max(count, static_cast<int>(rod.second.size()));
+  }
+  return "";
+}
+
+int leaving_face(const std::vector<Eigen::Vector3d> &positions, const double *boxlo, const double *boxhi,
+                 const int *periodic) {
+  for (const auto &x : positions)
+    for (int a = 0; a < 3; a++) {
+      if (periodic[a]) continue;
+      if (x[a] < boxlo[a]) return 2 * a;
+      if (x[a] > boxhi[a]) return 2 * a + 1;
+    }
+  return -1;
+}
+
+const char *face_name(int face) {
+  static const char *names[6] = {"-x", "+x", "-y", "+y", "-z", "+z"};
+  return face >= 0 && face < 6 ? names[face] : "none";
+}
+
+RodOverlap first_rod_overlap(const std::map<int, std::vector<GatheredSphere>> &rods) {
+  // Bounding boxes first: rods are few, spheres per rod many.
+  struct Box {
+    int id;
+    Eigen::Vector3d lo, hi;
+    const std::vector<GatheredSphere> *spheres;
+  };
+  std::vector<Box> boxes;
+  for (const auto &rod : rods) {
+    Box b{rod.first, Eigen::Vector3d::Constant(1e300), Eigen::Vector3d::Constant(-1e300), &rod.second};
+    for (const auto &s : rod.second) {
+      b.lo = b.lo.cwiseMin(s.position - Eigen::Vector3d::Constant(s.radius));
+      b.hi = b.hi.cwiseMax(s.position + Eigen::Vector3d::Constant(s.radius));
+    }
+    boxes.push_back(b);
+  }
+  RodOverlap worst;
+  double smallest = 1.0;
+  for (std::size_t a = 0; a < boxes.size(); a++)
+    for (std::size_t b = a + 1; b < boxes.size(); b++) {
+      const Box &p = boxes[a], &q = boxes[b];
+      if ((p.lo.array() > q.hi.array()).any() || (q.lo.array() > p.hi.array()).any()) continue;
+      for (const auto &s : *p.spheres)
+        for (const auto &t : *q.spheres) {
+          const double ratio = (s.position - t.position).norm() / (s.radius + t.radius);
+          if (ratio < smallest) {
+            smallest = ratio;
+            worst = RodOverlap{p.id, q.id, ratio};
+          }
+        }
+      if (worst.rod_a >= 0) return worst;
+    }
+  return worst;
+}
+
+}  // namespace LAMMPS_NS

@@ -85,8 +85,8 @@ class FixRodImplicit : public Fix {
   void resolve_partners();
   RodCensus census_;             // spheres per rod as first seen: lost atoms are an error
   std::set<int> held_rods_;      // rods held at the box boundary (their next step would leave the box)
-  void check_whole_rods(const class RodGather &gather);
-  void hold_rod(const std::vector<struct GatheredSphere> &spheres);
+  void check_whole_rods(const RodGather &gather);
+  void hold_rod(const std::vector<GatheredSphere> &spheres);
 };
 
 }  // namespace LAMMPS_NS

@@ -61,7 +61,7 @@ def classify(hsrod, text, timeout):
         env = dict(os.environ, HSROD_CACHE_DIR=os.path.join(tempfile.gettempdir(), "hsrod-stress-cache"))
         try:
             r = subprocess.run([hsrod, "-in", path, "-log", "none"], cwd=tmp, env=env,
-                               capture_output=True, text=True, timeout=timeout)
+                               capture_output=True, text=True, errors="backslashreplace", timeout=timeout)
         except subprocess.TimeoutExpired:
             return "failed", f"hang: no result within {timeout} s"
     out = r.stdout + r.stderr

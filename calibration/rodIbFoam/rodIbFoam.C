@@ -35,6 +35,7 @@
 
 #include "momentum_exchange.h"
 #include "rod_measures_csv.h"
+#include "load_extrapolation.h"
 
 #include <fstream>
 #include <iomanip>
@@ -294,6 +295,20 @@ int main(int argc, char* argv[])
     // relative change of the sphere loads per iteration, |F^n - F^n-1| / |F^n|
     const scalar tolF = steadyTol.lookupOrDefault<scalar>("F", 1e-7);
     std::vector<hsrod::calib::Vec3> prevF(ib.spheres().size());
+    // optional: stop on the Aitken-extrapolated loads instead of the raw load
+    // change (core/load_extrapolation.h): Fextrapolated = tolerance on the
+    // change of the extrapolated loads over one window of Fwindow iterations
+    std::unique_ptr<hsrod::calib::LoadExtrapolation> loadExtrap;
+    const scalar tolFx = steadyTol.lookupOrDefault<scalar>("Fextrapolated", -1);
+    if (tolFx > 0)
+    {
+        scalar dMin = GREAT;
+        for (const auto& s : ib.spheres().spheres()) dMin = min(dMin, s.d);
+        loadExtrap.reset(new hsrod::calib::LoadExtrapolation
+        (
+            steadyTol.lookupOrDefault<label>("Fwindow", 10), dMin
+        ));
+    }
 
     // rod measures per coupling interval (coupled mode)
     std::unique_ptr<std::ofstream> rodOut;
@@ -498,8 +513,43 @@ int main(int argc, char* argv[])
             dF = max(dF, mag(Fn - Fo)/(mag(Fn) + VSMALL));
             prevF[k] = F;
         }
-        if (steady && nIter > 2 && resU < tolU && resP < tolP && dF < tolF)
+        bool loadsConverged = dF < tolF;
+        if (loadExtrap)
         {
+            std::vector<hsrod::calib::SphereLoad> loads;
+            for (const auto& s : ib.spheres().spheres()) loads.push_back({s.force, s.torque});
+            loadExtrap->add(loads);
+            loadsConverged = loadExtrap->relative_change() < tolFx;
+        }
+        if (steady && nIter > 2 && resU < tolU && resP < tolP && loadsConverged)
+        {
+            if (loadExtrap)
+            {
+                Info<< "extrapolated loads: change over one window "
+                    << loadExtrap->relative_change() << " < " << tolFx
+                    << ", estimated iteration error of the raw loads "
+                    << loadExtrap->relative_remainder() << nl;
+                if (Pstream::master())
+                {
+                    const fileName dir = runTime.rootPath()/runTime.globalCaseName()
+                        /"postProcessing"/"rodIbFoam";
+                    mkDir(dir);
+                    std::ofstream ex(dir/"sphereLoadsExtrapolated.csv");
+                    ex << "# Aitken-extrapolated steady loads (core/load_extrapolation.h; SI: N, N m); "
+                       << "iterations " << nIter << ", change over one window "
+                       << loadExtrap->relative_change() << ", raw-load remainder "
+                       << loadExtrap->relative_remainder() << "\n"
+                       << "id,Fx,Fy,Fz,Tx,Ty,Tz\n" << std::setprecision(12);
+                    const auto xl = loadExtrap->extrapolated();
+                    for (std::size_t k = 0; k < xl.size(); ++k)
+                    {
+                        ex << ib.spheres().spheres()[k].id;
+                        for (const double c : xl[k].force) ex << ',' << c;
+                        for (const double c : xl[k].torque) ex << ',' << c;
+                        ex << '\n';
+                    }
+                }
+            }
             Info<< "steady state reached: initial residuals U " << resU << " < " << tolU
                 << ", p " << resP << " < " << tolP << ", load change " << dF << " < " << tolF
                 << " after " << nIter << " iterations" << nl;

@@ -20,6 +20,10 @@ Scene kinds (key "kind"); all quantities in SI units:
                       (topoSet + refineMesh in Allrun).
   sphereInBox         one sphere at the centre of a box with the exact Stokes
                       velocity on all faces (no wall correction), creeping flow.
+  slitBody            a straight row of spheres (rigid rod, pair) at the
+                      mid-plane of a wide slit, dragged ("load": "friction")
+                      or held in plane Poiseuille flow ("driving") at
+                      flow_angle_deg to the row; see make_slit_body.
   sphereBetweenPlates one sphere (or a rigid rod, "rod": {"n", "angle_deg"})
                       midway between no-slip plates z = 0, H moving at -U
                       relative to the body (body-fixed frame: plates and
@@ -225,7 +229,11 @@ def write_system(case, ctl, steady, has_pref, n_nonorth=0):
                      "yes" if ctl.get("momentum_predictor", False) else "no", ctl.get("tol_p_outer", 1e-4)))
     if has_pref:
         pimple += "    pRefCell 0;\n    pRefValue 0;\n"
-    pimple += "    steadyTolerance { U %g; p %g; }\n" % (tol_u, tol_p)
+    extra_tol = ""
+    if "tol_F_extrapolated" in ctl:
+        # stop on the Aitken-extrapolated loads (calibration/core/load_extrapolation.h)
+        extra_tol = " Fextrapolated %g; Fwindow %d;" % (ctl["tol_F_extrapolated"], ctl.get("extrapolation_window", 10))
+    pimple += "    steadyTolerance { U %g; p %g;%s }\n" % (tol_u, tol_p, extra_tol)
     relax = ("relaxationFactors\n{\n    equations { \"U.*\" %g; }\n    fields { \"p.*\" %g; }\n}\n"
              % (ctl.get("relax_U", 0.9), ctl.get("relax_p", 1.0))) if steady else ""
     foam_file(os.path.join(case, "system", "fvSolution"), "dictionary", "fvSolution",
@@ -264,8 +272,9 @@ def write_constant(case, fluid, spheres, ib):
                                               if k in rm) + "}\n"
     if "farField" in ib:
         ff = ib["farField"]
-        body += "farField\n{\n    type %s;\n    Uinf %s;\n    sphere 0;\n    patches (%s);\n}\n" % (
-            ff["type"], vec(ff["Uinf"]), " ".join(ff["patches"]))
+        body += "farField\n{\n    type %s;\n    Uinf %s;\n    sphere 0;\n    patches (%s);\n%s}\n" % (
+            ff["type"], vec(ff["Uinf"]), " ".join(ff["patches"]),
+            "".join("    %s %.12g;\n" % (k, ff[k]) for k in ("z0", "z1") if k in ff))
     foam_file(os.path.join(case, "constant", "immersedBoundaryProperties"), "dictionary",
               "immersedBoundaryProperties", body)
 
@@ -595,8 +604,81 @@ def make_sphere_between_plates(scene, case):
     write_allrun(case)
 
 
+def outer_cells(length, h, ratio_max):
+    """Fewest cells (first cell h, geometric growth at most ratio_max per
+    cell) that cover length; at most as many as uniform cells of size h."""
+    n_uniform = max(1, int(math.ceil(length / h - 1e-9)))
+    n = 1
+    while n < n_uniform and h * (ratio_max ** n - 1) / (ratio_max - 1) < length:
+        n += 1
+    return n
+
+
+def make_slit_body(scene, case):
+    """A straight row of n spheres (a rigid rod for spacing 1, a pair for
+    n = 2) at the mid-plane of a wide slit of gap H = d / beta, the row along
+    x, in creeping flow, steady. The mesh is fixed to the row (uniform cells
+    d / cells_per_diameter around it, geometric stretching to lateral faces
+    lateral_half_width H beyond the row's ends and to the plates), so one run
+    with the load at flow_angle_deg to the row gives the parallel and the
+    perpendicular response on the same mesh (Stokes flow is linear and the
+    slit isotropic in its plane).
+      load "friction": the row translates at -U e through fluid at rest
+                       (row frame: plates and lateral faces move at +U e);
+      load "driving":  the row is held in the undisturbed plane Poiseuille
+                       flow of gap-mean velocity U e (plates at rest; lateral
+                       faces: farField slitPoiseuille).
+    e = (cos a, sin a, 0), a = flow_angle_deg. The mesh family of a series
+    (cells_per_diameter n_d) keeps the outer cell counts proportional to n_d
+    (counts fixed at reference_cells_per_diameter by the growth limits), so
+    the meshes are refinements of one mapping (Richardson extrapolation)."""
+    d, beta, U = scene["d"], scene["beta"], scene["U"]
+    H = d / beta
+    body = scene.get("body", {})
+    n = int(body.get("n", 1))
+    spacing = float(body.get("spacing", 1.0)) * d
+    m = scene.get("mesh", {})
+    n_d = m.get("cells_per_diameter", 8)
+    n_ref = m.get("reference_cells_per_diameter", 8)
+    h, h_ref = d / n_d, d / n_ref
+    scale = float(n_d) / n_ref
+    core_w = m.get("core_half_width", 0.75) * d
+    lat = m.get("lateral_half_width", 4.0) * H
+    spheres = [{"id": i + 1, "x": [(i - 0.5 * (n - 1)) * spacing, 0.0, 0.0], "d": d} for i in range(n)]
+    axes = []
+    for ext in (0.5 * (n - 1) * spacing, 0.0):
+        core = math.ceil((ext + core_w) / h - 1e-9) * h
+        n_out = max(1, int(round(scale * outer_cells(ext + lat - core, h_ref, m.get("ratio_lateral", 1.25)))))
+        axes.append(Axis.focused(-(ext + lat), ext + lat, -core, core, h, n_out))
+    core_z = math.ceil(core_w / h - 1e-9) * h
+    if 0.5 * H - core_z < 1.5 * h_ref:
+        az = Axis.uniform(-0.5 * H, 0.5 * H, 2 * max(1, int(round(0.5 * H / h))))
+    else:
+        n_out_z = max(1, int(round(scale * outer_cells(0.5 * H - core_z, h_ref, m.get("ratio_z", 1.15)))))
+        az = Axis.focused(-0.5 * H, 0.5 * H, -core_z, core_z, h, n_out_z)
+    write_block_mesh(case, axes[0], axes[1], az,
+                     {f: ("farField", "patch") for f in ("xmin", "xmax", "ymin", "ymax")} |
+                     {"zmin": ("plates", "wall"), "zmax": ("plates", "wall")})
+    a = math.radians(scene.get("flow_angle_deg", 0.0))
+    e = [U * math.cos(a), U * math.sin(a), 0.0]
+    load = scene.get("load", "friction")
+    ib = dict(scene.get("ib", {}))
+    if load == "friction":
+        write_fields(case, {"farField": bc_fixed_u(e), "plates": bc_fixed_u(e)}, e)
+    elif load == "driving":
+        write_fields(case, {"farField": bc_fixed_u([0, 0, 0]), "plates": BC_WALL}, [0, 0, 0])
+        ib["farField"] = {"type": "slitPoiseuille", "Uinf": e, "patches": ["farField"],
+                          "z0": -0.5 * H, "z1": 0.5 * H}
+    else:
+        sys.exit("hsrod_case: slitBody load must be friction or driving (got '%s')" % load)
+    write_constant(case, dict(scene["fluid"], creeping=True), spheres, ib)
+    write_system(case, dict(scene.get("control", {}), creeping=True), True, has_pref=True)
+    write_allrun(case)
+    return axes[0].ncells() * axes[1].ncells() * az.ncells()
+
+
 KINDS = {"channel": make_channel, "sphereInBox": make_sphere_in_box,
-         "sphereBetweenPlates": make_sphere_between_plates}
+         "sphereBetweenPlates": make_sphere_between_plates, "slitBody": make_slit_body}
 
 
 def set_dotted(d, key, value):

@@ -1,8 +1,12 @@
 // hsrod calibration: confinement coefficient fit (see confinement_fit.h).
 #include "confinement_fit.h"
+#include "hydro/confinement_forms.h"
 
 #include <Eigen/Dense>
+#include <unsupported/Eigen/NonLinearOptimization>
+#include <unsupported/Eigen/NumericalDiff>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -158,6 +162,120 @@ ConfinementTable fit_table(const std::vector<ForceSample>& samples, const std::s
   std::string which;
   for (const auto& f : fitted) which += (which.empty() ? "" : " ") + f;
   return ConfinementTable(rows, source + "; fitted columns: " + which + "; other columns from the defaults");
+}
+
+// ---------------------------------------------------------------- curve fits
+namespace {
+
+using namespace hsrod::confinement_form;
+
+struct Given {
+  std::function<double(double)> lone, c_inf, growth;
+};
+
+double curve_value(CurveForm form, const double* p, int np, double beta, int n, const Given& g) {
+  switch (form) {
+    case CurveForm::SphereFriction:
+      return sphere_friction(beta, p[0]);
+    case CurveForm::SphereDriving:
+      return sphere_driving(beta, p[0]);
+    case CurveForm::RodColumn:
+      return rod_n_law(polynomial(p, np, beta), 1.0, 0.0, n);
+    case CurveForm::RodColumnGrowth:
+      return rod_n_law(polynomial(p, np - 1, beta), 1.0, rod_growth(beta, p[np - 1]), n);
+    case CurveForm::RodHeld: {
+      const double ls = g.lone(beta);
+      return rod_n_law(g.c_inf(beta) * rod_driving_inf(beta, p, np), ls, g.growth(beta) * ls, n);
+    }
+  }
+  return 0.0;
+}
+
+// Weighted residuals (model - value) / sigma for Eigen's LM.
+struct CurveResiduals {
+  typedef double Scalar;
+  enum { InputsAtCompileTime = Eigen::Dynamic, ValuesAtCompileTime = Eigen::Dynamic };
+  typedef Eigen::VectorXd InputType;
+  typedef Eigen::VectorXd ValueType;
+  typedef Eigen::MatrixXd JacobianType;
+
+  CurveForm form;
+  const std::vector<CurvePoint>* points;
+  Given given;
+  int np;
+  int inputs() const { return np; }
+  int values() const { return static_cast<int>(points->size()); }
+  int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& f) const {
+    for (int i = 0; i < values(); ++i) {
+      const CurvePoint& q = (*points)[i];
+      f(i) = (curve_value(form, x.data(), np, q.beta, q.n, given) - q.value) / q.sigma;
+    }
+    return 0;
+  }
+};
+
+}  // namespace
+
+double CurveFit::operator()(double beta, int n) const {
+  return curve_value(form, params.data(), static_cast<int>(params.size()), beta, n, {lone, rod_friction_inf, growth});
+}
+
+double CurveFit::asymptote(double beta) const {
+  const int np = static_cast<int>(params.size());
+  if (form == CurveForm::RodColumn) return confinement_form::polynomial(params.data(), np, beta);
+  if (form == CurveForm::RodColumnGrowth) return confinement_form::polynomial(params.data(), np - 1, beta);
+  if (form == CurveForm::RodHeld) return confinement_form::rod_driving_inf(beta, params.data(), np);
+  return (*this)(beta, 1);
+}
+
+double CurveFit::growth_at(double beta) const {
+  return form == CurveForm::RodColumnGrowth ? confinement_form::rod_growth(beta, params.back()) : 0.0;
+}
+
+CurveFit fit_curve(CurveForm form, const std::vector<CurvePoint>& points, std::vector<double> start,
+                   std::function<double(double)> lone, std::function<double(double)> rod_friction_inf,
+                   std::function<double(double)> growth) {
+  const int np = static_cast<int>(start.size()), m = static_cast<int>(points.size());
+  if (np < 1 || m < np) throw std::invalid_argument("fit_curve: need at least as many points as parameters");
+  for (const auto& q : points)
+    if (!(q.sigma > 0.0) || q.n < 1 || !std::isfinite(q.value))
+      throw std::invalid_argument("fit_curve: every point needs sigma > 0, n >= 1 and a finite value");
+  if (form == CurveForm::RodHeld && !(lone && rod_friction_inf && growth))
+    throw std::invalid_argument("fit_curve: RodHeld needs lambda_s, c_inf and g as functions of beta");
+  if (form == CurveForm::RodColumnGrowth && np < 2)
+    throw std::invalid_argument("fit_curve: RodColumnGrowth needs a polynomial term and k");
+  CurveResiduals res{form, &points, {lone, rod_friction_inf, growth}, np};
+  Eigen::NumericalDiff<CurveResiduals> num(res);
+  Eigen::LevenbergMarquardt<Eigen::NumericalDiff<CurveResiduals>> lm(num);
+  Eigen::VectorXd x = Eigen::Map<Eigen::VectorXd>(start.data(), np);
+  const auto status = lm.minimize(x);
+  if (status <= 0 || !x.allFinite())
+    throw std::runtime_error("fit_curve: Levenberg-Marquardt failed (status " + std::to_string(int(status)) + ")");
+  CurveFit out;
+  out.form = form;
+  out.lone = lone;
+  out.rod_friction_inf = rod_friction_inf;
+  out.growth = growth;
+  out.params.assign(x.data(), x.data() + np);
+  Eigen::VectorXd f(m);
+  res(x, f);
+  Eigen::MatrixXd J(m, np);
+  num.df(x, J);
+  const double chi2 = f.squaredNorm();
+  out.chi2_per_dof = m > np ? chi2 / (m - np) : 0.0;
+  // covariance of the parameters: s^2 (J^T J)^-1 (J already weighted by 1/sigma);
+  // s^2 = chi2/dof rescales to the observed scatter (1 if the sigmas are right)
+  const Eigen::MatrixXd cov = (J.transpose() * J).inverse() * (m > np ? std::max(1.0, out.chi2_per_dof) : 1.0);
+  for (int k = 0; k < np; ++k) out.std_errors.push_back(std::sqrt(std::max(0.0, cov(k, k))));
+  double s2 = 0.0;
+  for (int i = 0; i < m; ++i) {
+    const double rel = (out(points[i].beta, points[i].n) - points[i].value) / points[i].value;
+    out.relative_residuals.push_back(rel);
+    s2 += rel * rel;
+    out.max_relative = std::max(out.max_relative, std::abs(rel));
+  }
+  out.rms_relative = std::sqrt(s2 / m);
+  return out;
 }
 
 }  // namespace hsrod::calib

@@ -19,6 +19,7 @@
 // columns were fitted.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -57,5 +58,63 @@ LinearFit fit_linear(const std::vector<ForceSample>& samples);
 
 // The coefficient table from all samples (betas = those of the samples).
 ConfinementTable fit_table(const std::vector<ForceSample>& samples, const std::string& source);
+
+// ---------------------------------------------------------------------------
+// Curve fits over beta (and the rod's sphere count n) of the coefficients
+// measured by the resolved campaign (calibration/tools/hsrod_campaign.py),
+// weighted nonlinear least squares with Eigen's Levenberg-Marquardt
+// (unsupported/Eigen/NonLinearOptimization, MINPACK's lmder), parameter
+// standard errors from the covariance s^2 (J^T W J)^-1 at the solution.
+//
+// Forms (drag-models/hydro/confinement_forms.h; each with its known beta -> 0
+// or n = 1 limit built in):
+//   SphereFriction  K(beta): Faxen's mid-plane series with its leading
+//                   coefficient p0 free (Faxen: 1.004)
+//   SphereDriving   lambda(beta) = 3/2 (1 - p0 beta^2) (Faxen's law: 1/3)
+//   RodColumn       per-sphere friction of a straight rod of n spheres over
+//                   the lone sphere's, rod_n_law(c_inf, 1, 0, n),
+//                   c_inf = p0 + p1 beta + ... (all params)
+//   RodColumnGrowth the same with the growth term g = k beta^2 across the
+//                   axis: params = (polynomial..., k)
+//   RodHeld         per-sphere held-in-flow load (over the lone sphere's
+//                   friction x gap-mean velocity):
+//                   rod_n_law(c_inf lambda_inf, lambda_s, g lambda_s, n),
+//                   lambda_inf = 3/2 (1 - beta (q0 + q1 beta ...)) (params),
+//                   c_inf and g = `rod_friction_inf`, `growth` (given, from
+//                   the friction fit), lambda_s = `lone` (given).
+enum class CurveForm { SphereFriction, SphereDriving, RodColumn, RodColumnGrowth, RodHeld };
+
+struct CurvePoint {
+  double beta = 0.0;   // d / H [-]
+  int n = 1;           // spheres in the rod [-]
+  double value = 0.0;  // measured coefficient [-]
+  double sigma = 0.0;  // its standard uncertainty [-] (> 0)
+};
+
+struct CurveFit {
+  CurveForm form = CurveForm::SphereFriction;
+  std::vector<double> params, std_errors;
+  double chi2_per_dof = 0.0;       // weighted residual sum of squares / (m - p)
+  double rms_relative = 0.0;       // rms of (fit - value) / value [-]
+  double max_relative = 0.0;       // largest |fit - value| / value [-]
+  std::vector<double> relative_residuals;  // per point, in input order
+  // given functions of beta: the lone-sphere limit (RodHeld: lambda_s), the
+  // infinite rod's friction c_inf and the growth coefficient g (RodHeld)
+  std::function<double(double)> lone, rod_friction_inf, growth;
+  // RodColumn*: c_inf(beta); RodHeld: lambda_inf(beta); spheres: the value
+  double asymptote(double beta) const;
+  // RodColumnGrowth: g(beta) = k beta^2; else 0
+  double growth_at(double beta) const;
+  double operator()(double beta, int n = 1) const;
+};
+
+// Fits `form` to the points from the start values `start` (its size sets
+// the number of parameters; RodColumn: the polynomial degree + 1). Throws
+// std::invalid_argument for fewer points than parameters, sigma <= 0, or a
+// RodColumn / RodHeld fit without its given functions; std::runtime_error if
+// LM fails.
+CurveFit fit_curve(CurveForm form, const std::vector<CurvePoint>& points, std::vector<double> start,
+                   std::function<double(double)> lone = {}, std::function<double(double)> rod_friction_inf = {},
+                   std::function<double(double)> growth = {});
 
 }  // namespace hsrod::calib

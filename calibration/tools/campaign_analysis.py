@@ -124,7 +124,75 @@ def summarise(tab):
     return out
 
 
-def collect(out, csv_path, json_path=None):
+# relative uncertainty floor of every resolved coefficient: the lateral faces
+# 4 H away (results.md sec. 2: Faxen ratio +0.43 % at 4 H, +0.12 % at 6 H)
+DOMAIN_FLOOR = 0.003
+
+
+def fit_points(summ):
+    """Points for hsrod_fit_campaign: (quantity, beta, n, value, sigma, role)."""
+    lone = {rec["beta"]: rec for rec in summ if rec["n"] == 1}
+    pts = []
+
+    def rel(q):
+        u = q["uncertainty"]
+        return (u / abs(q["estimate"])) if math.isfinite(u) else 0.0
+
+    for rec in summ:
+        q, beta, n = rec["quantities"], rec["beta"], rec["n"]
+        if rec["spacing"] != 1 or beta not in lone:
+            continue
+        K = lone[beta]["quantities"]["R_par"]
+        if n == 1:
+            for name, key in (("sphere_friction", "R_par"), ("sphere_driving", "lambda_par")):
+                v = q[key]["estimate"]
+                pts.append((name, beta, 1, v, abs(v) * math.hypot(rel(q[key]), DOMAIN_FLOOR), rec["role"]))
+            continue
+        for name, key in (("par_friction", "R_par"), ("perp_friction", "R_perp"),
+                          ("par_held", "D_par"), ("perp_held", "D_perp")):
+            v = q[key]["estimate"] / (n * K["estimate"])
+            sig = abs(v) * math.sqrt(rel(q[key]) ** 2 + rel(K) ** 2 + DOMAIN_FLOOR ** 2)
+            pts.append((name, beta, n, v, sig, rec["role"]))
+    return pts
+
+
+SERIES_QUANTITIES = ("R_par", "R_perp", "D_par", "D_perp", "lambda_par", "lambda_perp", "r")
+
+
+def write_series(summ, path):
+    """One row per (beta, n, spacing): the rod's totals over 3 pi mu d (R)
+    and 3 pi mu d U (D), force-free velocities over U, r, with uncertainties."""
+    with open(path, "w") as f:
+        f.write("# resolved rodIbFoam campaign: rigid rows of spheres in a slit (campaign_analysis.py); "
+                "R = friction / (3 pi mu d), D = held-in-flow load / (3 pi mu d U_mean), "
+                "lambda = D / R (force-free velocity / U_mean), r = lambda_perp / lambda_par; "
+                "finest mesh, *_u = change from the next coarser mesh\n")
+        f.write("beta,n,spacing,role,meshes,%s,cells_finest,cpu_s\n" % ",".join(
+            "%s,%s_u" % (q, q) for q in SERIES_QUANTITIES))
+        for rec in summ:
+            q = rec["quantities"]
+            f.write("%g,%d,%g,%s,%s,%s,%d,%.1f\n" % (
+                rec["beta"], rec["n"], rec["spacing"], rec["role"], "/".join(map(str, rec["meshes"])),
+                ",".join("%.8g,%.3g" % (q[k]["estimate"], q[k]["uncertainty"] if math.isfinite(
+                    q[k]["uncertainty"]) else -1) for k in SERIES_QUANTITIES),
+                rec["cells"][rec["meshes"][-1]], rec["cpu_s"]))
+
+
+def write_profiles(summ, path):
+    with open(path, "w") as f:
+        f.write("# per-sphere resolved coefficients (finest mesh): sphere i's share of R / D "
+                "(campaign_analysis.py); spheres along x at x_over_d\n")
+        f.write("beta,n,spacing,load,component,sphere,x_over_d,value\n")
+        for rec in summ:
+            n, sp = rec["n"], rec["spacing"]
+            for key, vals in sorted(rec["profiles"].items()):
+                load, comp = key.split("_")
+                for i, v in enumerate(vals):
+                    f.write("%g,%d,%g,%s,%s,%d,%g,%.8g\n" % (rec["beta"], n, sp, load, comp, i + 1,
+                                                              (i - 0.5 * (n - 1)) * sp, v))
+
+
+def collect(out, csv_path, json_path=None, points_path=None, series_path=None, profiles_path=None):
     results = load_results(out)
     if not results:
         sys.exit("campaign_analysis: no finished cases in %s" % out)
@@ -153,6 +221,16 @@ def collect(out, csv_path, json_path=None):
                        "git_commits": sorted({r["provenance"]["git_commit"] for r in results}),
                        "host": prov["host"], "total_cpu_s": round(sum(r["run"]["cpu_s"] for r in results), 1),
                        "series": summ}, f, indent=1)
+    if series_path:
+        write_series(summ, series_path)
+    if profiles_path:
+        write_profiles(summ, profiles_path)
+    if points_path:
+        with open(points_path, "w") as f:
+            f.write("# points for hsrod_fit_campaign (campaign_analysis.py from %d resolved cases)\n" % len(results))
+            f.write("quantity,beta,n,value,sigma,role\n")
+            for p_ in fit_points(summ):
+                f.write("%s,%.6g,%d,%.8g,%.3g,%s\n" % p_)
     print("%-6s %-3s %-4s %-7s %-22s %-22s %-18s %-18s %s" % (
         "beta", "n", "s/d", "meshes", "R_par (sum)", "R_perp (sum)", "lambda_par", "lambda_perp", "r"))
     for rec in summ:
@@ -169,6 +247,13 @@ def collect(out, csv_path, json_path=None):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) < 3:
-        sys.exit("usage: campaign_analysis.py OUT CSV [JSON]")
-    sys.exit(collect(sys.argv[1], sys.argv[2], sys.argv[3] if len(sys.argv) > 3 else None))
+    import argparse
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("out", help="campaign directory (hsrod_campaign.py run OUT)")
+    ap.add_argument("--csv", required=True, help="per-sphere table of every case")
+    ap.add_argument("--json", help="series summary (JSON)")
+    ap.add_argument("--points", help="points for hsrod_fit_campaign")
+    ap.add_argument("--series", help="series totals CSV (cross-check, tests)")
+    ap.add_argument("--profiles", help="per-sphere profiles CSV, finest mesh")
+    a = ap.parse_args()
+    sys.exit(collect(a.out, a.csv, a.json, a.points, a.series, a.profiles))

@@ -1,0 +1,71 @@
+#include "level_crosscheck.h"
+
+#include <numeric>
+
+#include "flow/background_flow.h"
+#include "hydro/hydrodynamic_model.h"
+
+namespace hsrod::calib {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Uniform gap-averaged stream along x in a channel far wider than the row.
+class UniformStream : public BackgroundFlow {
+ public:
+  UniformStream(double gap_height, double speed) : geometry_(1.0, 1.0, gap_height, -0.5, -0.5), speed_(speed) {}
+  Eigen::Vector2d velocity(double, double) const override { return {speed_, 0.0}; }
+  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
+  double pressure(double, double) const override { return 0.0; }
+  double mean_velocity() const override { return speed_; }
+  const ChannelGeometry& geometry() const override { return geometry_; }
+  std::string description() const override { return "uniform stream (cross-check)"; }
+
+ private:
+  ChannelGeometry geometry_;
+  double speed_;
+};
+
+double sum(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); }
+
+}  // namespace
+
+double RowResponse::R_par() const { return sum(friction_par); }
+double RowResponse::R_perp() const { return sum(friction_perp); }
+double RowResponse::D_par() const { return sum(driving_par); }
+double RowResponse::D_perp() const { return sum(driving_perp); }
+
+RowResponse row_response(const std::string& model_name, double beta, int n, double spacing,
+                         const ConfinementTable& table) {
+  const double d = 3e-6, mu = 1e-3, U = 1e-3;  // any: the result is dimensionless
+  const HydrodynamicParameters p{mu, d / beta, d};
+  const auto model = make_hydrodynamic_model(model_name, p, table);
+  const UniformStream still(p.gap_height, 0.0), stream(p.gap_height, U);
+  const double scale = 3.0 * kPi * mu * d * U;
+  RowResponse out;
+  for (int across = 0; across < 2; ++across) {
+    RodGeometry rod;
+    rod.sphere_diameter = d;
+    for (int i = 0; i < n; ++i) {
+      const double s = (i - 0.5 * (n - 1)) * spacing * d;
+      rod.positions.push_back(across ? Eigen::Vector3d(0.0, s, 0.0) : Eigen::Vector3d(s, 0.0, 0.0));
+    }
+    RodDrag drag;
+    model->evaluate(rod, still, drag);
+    Eigen::VectorXd v = Eigen::VectorXd::Zero(3 * n);
+    for (int i = 0; i < n; ++i) v(3 * i) = -U;  // translating at -U e_x
+    const Eigen::VectorXd f_fric = drag.forces(v);
+    model->evaluate(rod, stream, drag);
+    const Eigen::VectorXd f_held = drag.forces(Eigen::VectorXd::Zero(3 * n));
+    auto& fr = across ? out.friction_perp : out.friction_par;
+    auto& dr = across ? out.driving_perp : out.driving_par;
+    for (int i = 0; i < n; ++i) {
+      fr.push_back(f_fric(3 * i) / scale);
+      dr.push_back(f_held(3 * i) / scale);
+    }
+  }
+  return out;
+}
+
+}  // namespace hsrod::calib

@@ -1,0 +1,38 @@
+// hsrod calibration: the reduced models' response of a straight row of
+// spheres in a slit, in the units of the resolved campaign
+// (calibration/tools/campaign_analysis.py), for the cross-check of levels
+// 1-4 against rodIbFoam and the calibration tests.
+//
+// Row of n spheres (diameter d, centre spacing s d) at the mid-plane of a
+// slit of gap H = d / beta, far from side walls, along (par) or across
+// (perp) a uniform gap-averaged stream of speed U:
+//   friction_i = x-force on sphere i when the row translates at -U e_x
+//                through fluid at rest, over 3 pi mu d U;
+//   driving_i  = x-force on sphere i held in the stream, over 3 pi mu d U;
+// R = sum friction_i, D = sum driving_i, lambda = D / R (force-free
+// velocity over U), r = lambda_perp / lambda_par.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hydro/confinement_coefficients.h"
+
+namespace hsrod::calib {
+
+struct RowResponse {
+  std::vector<double> friction_par, friction_perp, driving_par, driving_perp;  // per sphere [-]
+  double R_par() const;
+  double R_perp() const;
+  double D_par() const;
+  double D_perp() const;
+  double lambda_par() const { return D_par() / R_par(); }
+  double lambda_perp() const { return D_perp() / R_perp(); }
+  double r() const { return lambda_perp() / lambda_par(); }
+};
+
+// model: a registered model name (isotropic, local, nonlocal, twoway).
+RowResponse row_response(const std::string& model, double beta, int n, double spacing,
+                         const ConfinementTable& table);
+
+}  // namespace hsrod::calib

@@ -1,0 +1,141 @@
+// hsrod_crosscheck_levels: levels 1-4 against the resolved campaign.
+//
+//   hsrod_crosscheck_levels SERIES.csv PROFILES.csv OUT.csv [--table FILE] [--label TEXT]
+//                           [--levels isotropic,local,nonlocal,twoway] [--write-table FILE]
+//
+// SERIES.csv / PROFILES.csv: calibration/data/resolved_campaign_{series,profiles}.csv
+// (campaign_analysis.py). For every resolved row of spheres and every level,
+// the model's response (calibration/core/level_crosscheck.h) with the given
+// coefficient table (default: the built-in ConfinementTable::default_table())
+// is compared with the resolved one: totals R_par, R_perp, D_par, D_perp,
+// force-free velocities lambda_par/perp, r, and the RMS of the per-sphere
+// profile error over the profile's mean magnitude. OUT.csv: one row per
+// (label, level, beta, n, spacing, quantity). Prints a summary per level.
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+
+#include "level_crosscheck.h"
+
+using namespace hsrod::calib;
+
+namespace {
+
+std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::string line;
+  std::vector<std::string> head;
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    std::string x;
+    while (std::getline(ss, x, ',')) f.push_back(x);
+    if (head.empty()) {
+      head = f;
+      continue;
+    }
+    if (f.size() != head.size()) throw std::runtime_error(path + ": ragged row: " + line);
+    std::map<std::string, std::string> r;
+    for (std::size_t k = 0; k < f.size(); ++k) r[head[k]] = f[k];
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string x;
+  while (std::getline(ss, x, ',')) out.push_back(x);
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Cross-check hsrod's reduced models against the resolved campaign"};
+  std::string series_path, profiles_path, out_path, table_path, label = "built-in", levels = "isotropic,local,nonlocal,twoway";
+  app.add_option("series", series_path)->required()->check(CLI::ExistingFile);
+  app.add_option("profiles", profiles_path)->required()->check(CLI::ExistingFile);
+  app.add_option("output", out_path)->required();
+  app.add_option("--table", table_path, "coefficient file (default: the built-in table)");
+  app.add_option("--label", label, "label of this table in the output");
+  app.add_option("--levels", levels, "models to check");
+  std::string write_table;
+  app.add_option("--write-table", write_table, "also write the table in use to this file");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    const hsrod::ConfinementTable table =
+        table_path.empty() ? hsrod::ConfinementTable::default_table() : hsrod::ConfinementTable::read(table_path);
+    if (!write_table.empty()) table.write(write_table);
+    const auto series = read_csv(series_path);
+    // profiles: (beta, n, spacing, load_component) -> values by sphere
+    std::map<std::tuple<std::string, std::string, std::string, std::string>, std::vector<double>> prof;
+    for (const auto& r : read_csv(profiles_path))
+      prof[{r.at("beta"), r.at("n"), r.at("spacing"), r.at("load") + "_" + r.at("component")}].push_back(
+          std::stod(r.at("value")));
+    std::ofstream out(out_path);
+    out << "label,level,beta,n,spacing,role,quantity,resolved,model,rel_error\n";
+    out.precision(8);
+    for (const auto& level : split(levels)) {
+      double worst_tot = 0, worst_lambda = 0, worst_r = 0, worst_prof = 0;
+      for (const auto& s : series) {
+        const double beta = std::stod(s.at("beta")), spacing = std::stod(s.at("spacing"));
+        const int n = std::stoi(s.at("n"));
+        const RowResponse m = row_response(level, beta, n, spacing, table);
+        const std::pair<const char*, double> q[] = {{"R_par", m.R_par()},         {"R_perp", m.R_perp()},
+                                                    {"D_par", m.D_par()},         {"D_perp", m.D_perp()},
+                                                    {"lambda_par", m.lambda_par()}, {"lambda_perp", m.lambda_perp()},
+                                                    {"r", m.r()}};
+        for (const auto& [name, val] : q) {
+          const double res = std::stod(s.at(name));
+          const double err = val / res - 1.0;
+          out << label << ',' << level << ',' << s.at("beta") << ',' << n << ',' << s.at("spacing") << ','
+              << s.at("role") << ',' << name << ',' << res << ',' << val << ',' << err << '\n';
+          const std::string nm = name;
+          if (nm[0] == 'R' || nm[0] == 'D') worst_tot = std::max(worst_tot, std::abs(err));
+          else if (nm == "r") worst_r = std::max(worst_r, std::abs(err));
+          else worst_lambda = std::max(worst_lambda, std::abs(err));
+        }
+        const std::pair<const char*, const std::vector<double>*> pr[] = {{"friction_par", &m.friction_par},
+                                                                         {"friction_perp", &m.friction_perp},
+                                                                         {"driving_par", &m.driving_par},
+                                                                         {"driving_perp", &m.driving_perp}};
+        for (const auto& [name, vals] : pr) {
+          const auto it = prof.find({s.at("beta"), s.at("n"), s.at("spacing"), name});
+          if (it == prof.end() || it->second.size() != vals->size()) continue;
+          double se = 0, mean = 0;
+          for (std::size_t i = 0; i < vals->size(); ++i) {
+            se += std::pow((*vals)[i] - it->second[i], 2);
+            mean += std::abs(it->second[i]);
+          }
+          const double rms = std::sqrt(se / vals->size()) / (mean / vals->size());
+          out << label << ',' << level << ',' << s.at("beta") << ',' << n << ',' << s.at("spacing") << ','
+              << s.at("role") << ",profile_rms_" << name << ",0,0," << rms << '\n';
+          if (n > 1) worst_prof = std::max(worst_prof, rms);
+          for (std::size_t i = 0; i < vals->size(); ++i)
+            out << label << ',' << level << ',' << s.at("beta") << ',' << n << ',' << s.at("spacing") << ','
+                << s.at("role") << ',' << name << '_' << (i + 1) << ',' << it->second[i] << ',' << (*vals)[i] << ','
+                << (*vals)[i] / it->second[i] - 1.0 << '\n';
+        }
+      }
+      std::printf("%-10s %-9s worst |error|: totals %6.1f %%, force-free velocity %5.2f %%, r %5.2f %%, "
+                  "per-sphere profile RMS %5.1f %%\n",
+                  label.c_str(), level.c_str(), 100 * worst_tot, 100 * worst_lambda, 100 * worst_r, 100 * worst_prof);
+    }
+    std::printf("wrote %s\n", out_path.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "hsrod_crosscheck_levels: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

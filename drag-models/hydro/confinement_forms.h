@@ -1,0 +1,53 @@
+// Functional forms of the confinement coefficients in beta = d / H and the
+// rod's sphere count n, shared by the built-in table
+// (default_coefficients.cpp) and the calibration fit that determines their
+// parameters (calibration/core/confinement_fit.h, hsrod_fit_campaign).
+// Each form has its known limit built in.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+namespace hsrod::confinement_form {
+
+// Lone sphere's friction over 3 pi mu d: Faxen's mid-plane series (Happel &
+// Brenner 1965, eq. 7-4.28) with its leading coefficient p0 free (Faxen:
+// 1.004): 1 / (1 - p0 beta + 0.418 beta^3 + 0.21 beta^4 - 0.169 beta^5);
+// 1 as beta -> 0.
+inline double sphere_friction(double beta, double p0) {
+  const double b3 = beta * beta * beta;
+  return 1.0 / (1.0 - p0 * beta + 0.418 * b3 + 0.21 * b3 * beta - 0.169 * b3 * beta * beta);
+}
+
+// Lone sphere's force-free velocity over the gap-mean velocity:
+// 3/2 (1 - p0 beta^2) (Faxen's law in the parabolic gap profile: p0 = 1/3);
+// the mid-plane velocity 3/2 as beta -> 0.
+inline double sphere_driving(double beta, double p0) { return 1.5 * (1.0 - p0 * beta * beta); }
+
+inline double polynomial(const double* p, int np, double beta) {
+  double v = 0.0, b = 1.0;
+  for (int k = 0; k < np; ++k, b *= beta) v += p[k] * b;
+  return v;
+}
+
+// n-law of a straight rod of n spheres: the per-sphere coefficient is the
+// infinite rod's c_inf plus two ends that carry the lone sphere's excess
+// (resistive-force theory with end corrections), plus a term growing with
+// the rod's length for a rod moving across its axis (the depth-averaged
+// pressure build-up in front of the chain, Bhattacharya et al. 2005):
+//     c(n) = c_inf + (c_1 - c_inf - g)/n + g n,       c(1) = c_1,
+// g = growth coefficient (0 along the axis).
+inline double rod_n_law(double c_inf, double c_1, double g, int n) { return c_inf + (c_1 - c_inf - g) / n + g * n; }
+// c_inf from the coefficient c_m of a rod of m spheres (inverse of rod_n_law).
+inline double rod_n_law_asymptote(double c_m, double c_1, double g, int m) {
+  return (m * c_m - c_1 + g - m * m * g) / (m - 1);
+}
+// Growth coefficient across the axis: g = k beta^2 (k fitted, see
+// perpendicular_growth_coefficient in confinement_coefficients.h).
+inline double rod_growth(double beta, double k) { return k * beta * beta; }
+
+// Infinite rod's force-free velocity over the gap-mean velocity:
+// 3/2 (1 - beta (q0 + q1 beta + ...)); 3/2 as beta -> 0 (Berthet et al. 2013).
+inline double rod_driving_inf(double beta, const double* q, int nq) { return 1.5 * (1.0 - beta * polynomial(q, nq, beta)); }
+
+}  // namespace hsrod::confinement_form

@@ -1,0 +1,123 @@
+// Levels 1-4 with the calibrated confinement table (the fit of levels 1-2 to
+// the resolved rodIbFoam campaign, calibration/data/confinement_campaign.txt,
+// hsrod_fit_campaign) against the resolved runs themselves (calibration/data/
+// resolved_campaign_series.csv, calibration/tools/campaign_analysis.py):
+//  - level 2 reproduces the total friction and the held-in-flow load of
+//    rigid 10-sphere rods (the table's rod) along and across the flow within
+//    10 %, their force-free velocity within 3 % and r = U_perp / U_par
+//    within 1 %, at every calibrated beta;
+//  - the same for the rod left out of the fit (role "heldout": 7 spheres at
+//    beta 0.25, neither fitted): the table is a fit (smooth forms in beta
+//    and n), not a lookup; level 2 applies the 10-sphere columns to it;
+//  - a lone sphere at every level is the resolved confined sphere (1 %).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "level_crosscheck.h"
+
+using namespace hsrod::calib;
+
+namespace {
+
+struct Resolved {
+  double beta = 0, spacing = 1;
+  int n = 1;
+  std::string role;
+  std::map<std::string, double> q;
+};
+
+std::vector<Resolved> resolved_series() {
+  const std::string path = std::string(HSROD_TEST_DATA_DIR) + "/../../calibration/data/resolved_campaign_series.csv";
+  std::ifstream in(path);
+  EXPECT_TRUE(in.good()) << path;
+  std::string line;
+  std::vector<std::string> head;
+  std::vector<Resolved> out;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    std::string x;
+    while (std::getline(ss, x, ',')) f.push_back(x);
+    if (head.empty()) {
+      head = f;
+      continue;
+    }
+    Resolved r;
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      if (head[k] == "role") r.role = f[k];
+      else if (head[k] == "meshes") continue;
+      else if (head[k] == "beta") r.beta = std::stod(f[k]);
+      else if (head[k] == "n") r.n = std::stoi(f[k]);
+      else if (head[k] == "spacing") r.spacing = std::stod(f[k]);
+      else r.q[head[k]] = std::stod(f[k]);
+    }
+    out.push_back(r);
+  }
+  return out;
+}
+
+const hsrod::ConfinementTable& calibrated_table() {
+  static const hsrod::ConfinementTable table = hsrod::ConfinementTable::read(
+      std::string(HSROD_TEST_DATA_DIR) + "/../../calibration/data/confinement_campaign.txt");
+  return table;
+}
+
+void expect_rod(const Resolved& s, const std::string& level) {
+  const hsrod::ConfinementTable& table = calibrated_table();
+  const RowResponse m = row_response(level, s.beta, s.n, s.spacing, table);
+  const std::string where = level + " beta " + std::to_string(s.beta) + " n " + std::to_string(s.n) + " (" + s.role + ")";
+  EXPECT_NEAR(m.R_par() / s.q.at("R_par"), 1.0, 0.10) << where << " friction along";
+  EXPECT_NEAR(m.R_perp() / s.q.at("R_perp"), 1.0, 0.10) << where << " friction across";
+  EXPECT_NEAR(m.D_par() / s.q.at("D_par"), 1.0, 0.10) << where << " held load along";
+  EXPECT_NEAR(m.D_perp() / s.q.at("D_perp"), 1.0, 0.10) << where << " held load across";
+  EXPECT_NEAR(m.lambda_par() / s.q.at("lambda_par"), 1.0, 0.03) << where << " free velocity along";
+  EXPECT_NEAR(m.lambda_perp() / s.q.at("lambda_perp"), 1.0, 0.03) << where << " free velocity across";
+  EXPECT_NEAR(m.r() / s.q.at("r"), 1.0, 0.01) << where << " r = U_perp / U_par";
+  std::printf("%s: R_par %+.2f %% R_perp %+.2f %% D_par %+.2f %% D_perp %+.2f %% r %.4f (resolved %.4f)\n",
+              where.c_str(), 100 * (m.R_par() / s.q.at("R_par") - 1), 100 * (m.R_perp() / s.q.at("R_perp") - 1),
+              100 * (m.D_par() / s.q.at("D_par") - 1), 100 * (m.D_perp() / s.q.at("D_perp") - 1), m.r(), s.q.at("r"));
+}
+
+}  // namespace
+
+TEST(calibration_CalibratedLevels, Level2ReproducesTheResolvedRigidRods) {
+  int rods = 0;
+  for (const auto& s : resolved_series())
+    if (s.n == 10 && s.spacing == 1.0 && s.role == "fit") {
+      expect_rod(s, "local");
+      ++rods;
+    }
+  EXPECT_GE(rods, 2) << "resolved 10-sphere rods at two or more beta expected";
+}
+
+TEST(calibration_CalibratedLevels, Level2PredictsHeldOutRods) {
+  int rods = 0;
+  for (const auto& s : resolved_series())
+    if (s.n > 1 && s.spacing == 1.0 && s.role == "heldout") {
+      expect_rod(s, "local");
+      ++rods;
+    }
+  EXPECT_GE(rods, 1) << "no held-out resolved rod in the record";
+}
+
+TEST(calibration_CalibratedLevels, LoneSphereAtEveryLevelIsTheResolvedConfinedSphere) {
+  const hsrod::ConfinementTable& table = calibrated_table();
+  int spheres = 0;
+  for (const auto& s : resolved_series()) {
+    if (s.n != 1) continue;
+    ++spheres;
+    for (const std::string level : {"isotropic", "local", "nonlocal", "twoway"}) {
+      const RowResponse m = row_response(level, s.beta, 1, 1.0, table);
+      EXPECT_NEAR(m.R_par() / s.q.at("R_par"), 1.0, 0.01) << level << " beta " << s.beta;
+      EXPECT_NEAR(m.D_par() / s.q.at("D_par"), 1.0, 0.01) << level << " beta " << s.beta;
+      EXPECT_NEAR(m.R_perp() / m.R_par(), 1.0, 1e-9) << level << ": a lone sphere is isotropic";
+    }
+  }
+  EXPECT_GE(spheres, 2);
+}

@@ -198,6 +198,12 @@ struct OverdampedRodSolver::Workspace {
   int analysed_spheres = -1;
   std::vector<std::pair<int, int>> analysed_bonds;
   bool chain = false;                        // every bond joins spheres k and k+1
+  // Sections: with bonds joining spheres at most g apart in the numbering
+  // (g = 4 for the 2x2 sections of create_rod's `section 2`), groups of g
+  // consecutive spheres couple only their neighbouring groups, so the
+  // matrix is block-tridiagonal in 6g x 6g blocks. 0: not used (a chain, or
+  // a bandwidth too large for dense blocks to pay).
+  int group_spheres = 0;
   std::vector<int> partner_start, partners;  // bonded partners of each sphere (CSR)
 
   // Per step, sized once.
@@ -214,6 +220,14 @@ struct OverdampedRodSolver::Workspace {
   // Block-tridiagonal storage: diagonal[k] = A(k, k), upper[k] = A(k, k+1),
   // lower[k] = A(k, k-1) (6x6 blocks).
   std::vector<Matrix6d> diagonal, upper, lower;
+  // The same over groups of `group_spheres` spheres (6g x 6g blocks), sized
+  // at analysis. The last group is padded to g spheres by unit rows that
+  // couple to nothing (their unknowns solve to 0), so every block has one
+  // size and the 12x12 .. 24x24 cases run with fixed-size kernels.
+  std::vector<Eigen::MatrixXd> group_diagonal, group_upper, group_lower;
+  Eigen::MatrixXd group_work;
+  Eigen::PartialPivLU<Eigen::MatrixXd> group_lu;
+  Eigen::VectorXd group_rhs;  // padded right-hand side, then the solution
 
   // General couplings.
   std::vector<Eigen::Triplet<double>> triplets;
@@ -229,6 +243,7 @@ struct OverdampedRodSolver::Workspace {
 
   int analyses = 0;
   OverdampedSolverStatistics statistics;
+  LinearSolver method = LinearSolver::automatic;
 
   void analyse_structure(const OverdampedRod& rod);
   void find_contacts(const OverdampedRod& rod, const ChannelGeometry* geometry, const WallContactParameters* walls,
@@ -240,6 +255,10 @@ struct OverdampedRodSolver::Workspace {
   template <typename Add>
   void add_couplings(const OverdampedRod& rod, const RodDrag& drag, double dt, Add add) const;
   void solve_banded(int n);
+  bool fits_groups() const;
+  void solve_grouped();
+  template <int B>
+  void solve_grouped_fixed();
   void factorize_sparse();
 };
 
@@ -252,10 +271,12 @@ void OverdampedRodSolver::Workspace::analyse_structure(const OverdampedRod& rod)
   analysed_spheres = n;
   analysed_bonds.clear();
   chain = true;
+  int bandwidth = 0;  // largest |i - j| of a bond
   std::vector<int> count(n + 1, 0);
   for (const RodBond& b : rod.bonds) {
     analysed_bonds.emplace_back(b.i, b.j);
     if (std::abs(b.i - b.j) != 1) chain = false;
+    bandwidth = std::max(bandwidth, std::abs(b.i - b.j));
     ++count[b.i + 1];
     ++count[b.j + 1];
   }
@@ -271,7 +292,20 @@ void OverdampedRodSolver::Workspace::analyse_structure(const OverdampedRod& rod)
   diagonal.resize(n);
   upper.resize(n);
   lower.resize(n);
-  if (chain) ++analyses;  // the band; the sparse path counts its own analyses
+  // Groups of up to 8 spheres (48 x 48 blocks): beyond that the sparse LU
+  // of the band is cheaper than dense blocks.
+  group_spheres = !chain && bandwidth <= 8 ? bandwidth : 0;
+  if (group_spheres > 0) {
+    const int groups = (n + group_spheres - 1) / group_spheres;
+    const int b = 6 * group_spheres;
+    group_diagonal.assign(groups, Eigen::MatrixXd::Zero(b, b));
+    group_upper.assign(groups, Eigen::MatrixXd::Zero(b, b));
+    group_lower.assign(groups, Eigen::MatrixXd::Zero(b, b));
+    group_work.setZero(b, b);
+    group_lu = Eigen::PartialPivLU<Eigen::MatrixXd>(b);
+    group_rhs.setZero(b * groups);
+  }
+  if (chain || group_spheres > 0) ++analyses;  // the band; the sparse path counts its own analyses
 }
 
 void OverdampedRodSolver::Workspace::find_contacts(const OverdampedRod& rod, const ChannelGeometry* geometry,
@@ -374,6 +408,70 @@ void OverdampedRodSolver::Workspace::solve_banded(int n) {
   for (int k = n - 2; k >= 0; --k) rhs.segment<6>(6 * k).noalias() -= upper[k] * rhs.segment<6>(6 * (k + 1));
 }
 
+// Self-contacts between spheres at most `group_spheres` apart stay inside
+// the blocks of neighbouring groups.
+bool OverdampedRodSolver::Workspace::fits_groups() const {
+  if (group_spheres == 0) return false;
+  for (const SpherePairContact& c : pair_contacts)
+    if (std::abs(c.i - c.j) > group_spheres) return false;
+  return true;
+}
+
+// solve_banded over groups of spheres: group_rhs (padded) becomes the
+// solution. Fixed-size blocks B = 6g for g = 2..4 (unrolled LU,
+// small_block_lu.h), otherwise dynamic blocks and Eigen's partial-pivoting LU.
+template <int B>
+void OverdampedRodSolver::Workspace::solve_grouped_fixed() {
+  using Block = Eigen::Matrix<double, B, B>;
+  using Vector = Eigen::Matrix<double, B, 1>;
+  const int groups = static_cast<int>(group_diagonal.size());
+  for (int k = 0; k < groups; ++k) {
+    Eigen::Map<Block> diagonal_k(group_diagonal[k].data());
+    Eigen::Map<Vector> y(group_rhs.data() + B * k);
+    if (k > 0) {
+      const Eigen::Map<const Block> lower_k(group_lower[k].data());
+      const Eigen::Map<const Block> upper_previous(group_upper[k - 1].data());
+      diagonal_k.noalias() -= lower_k * upper_previous;
+      y.noalias() -= lower_k * Eigen::Map<const Vector>(group_rhs.data() + B * (k - 1));
+    }
+    const SmallBlockLu<B> block_lu(diagonal_k);
+    block_lu.solve_in_place(y);
+    if (k + 1 < groups) {
+      Eigen::Map<Block> upper_k(group_upper[k].data());
+      block_lu.solve_in_place(upper_k);
+    }
+  }
+  for (int k = groups - 2; k >= 0; --k)
+    Eigen::Map<Vector>(group_rhs.data() + B * k).noalias() -=
+        Eigen::Map<const Block>(group_upper[k].data()) * Eigen::Map<const Vector>(group_rhs.data() + B * (k + 1));
+}
+
+void OverdampedRodSolver::Workspace::solve_grouped() {
+  const int b = 6 * group_spheres;
+  switch (b) {
+    case 12: solve_grouped_fixed<12>(); return;
+    case 18: solve_grouped_fixed<18>(); return;
+    case 24: solve_grouped_fixed<24>(); return;
+    default: break;
+  }
+  const int groups = static_cast<int>(group_diagonal.size());
+  for (int k = 0; k < groups; ++k) {
+    auto y = group_rhs.segment(b * k, b);
+    if (k > 0) {
+      group_diagonal[k].noalias() -= group_lower[k] * group_upper[k - 1];
+      y.noalias() -= group_lower[k] * group_rhs.segment(b * (k - 1), b);
+    }
+    group_lu.compute(group_diagonal[k]);
+    y = group_lu.solve(y).eval();
+    if (k + 1 < groups) {
+      group_work = group_lu.solve(group_upper[k]);
+      group_upper[k].swap(group_work);
+    }
+  }
+  for (int k = groups - 2; k >= 0; --k)
+    group_rhs.segment(b * k, b).noalias() -= group_upper[k] * group_rhs.segment(b * (k + 1), b);
+}
+
 // Factorises `matrix`, analysing its pattern only when it changed.
 void OverdampedRodSolver::Workspace::factorize_sparse() {
   const int outer_size = static_cast<int>(matrix.outerSize()) + 1;
@@ -399,6 +497,7 @@ OverdampedRodSolver& OverdampedRodSolver::operator=(OverdampedRodSolver&&) noexc
 
 int OverdampedRodSolver::pattern_analyses() const { return workspace_->analyses; }
 const OverdampedSolverStatistics& OverdampedRodSolver::statistics() const { return workspace_->statistics; }
+void OverdampedRodSolver::set_linear_solver(LinearSolver method) { workspace_->method = method; }
 
 OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag, double dt,
                                          const ChannelGeometry* geometry, const WallContactParameters* walls) {
@@ -455,7 +554,8 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
 
   // Matrix R / dt + K, factorised by the cheapest method its couplings allow.
   const Eigen::VectorXd* displacement = &rhs;
-  if (w.chain && !drag.coupled() && w.pair_contacts.empty() && n > 0) {
+  const bool automatic = w.method == LinearSolver::automatic;
+  if (automatic && w.chain && !drag.coupled() && w.pair_contacts.empty() && n > 0) {
     for (int k = 0; k < n; ++k) {
       w.diagonal[k].setZero();
       w.upper[k].setZero();
@@ -469,7 +569,29 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
     });
     w.solve_banded(n);
     ++w.statistics.banded_steps;
-  } else if (drag.coupled() || n <= 16) {
+  } else if (automatic && !drag.coupled() && w.fits_groups()) {
+    const int g = w.group_spheres;
+    for (int k = 0; k < static_cast<int>(w.group_diagonal.size()); ++k) {
+      w.group_diagonal[k].setZero();
+      w.group_upper[k].setZero();
+      w.group_lower[k].setZero();
+    }
+    // Padding of the last group: unit rows and columns.
+    for (int dof = ndof; dof < static_cast<int>(w.group_rhs.size()); ++dof)
+      w.group_diagonal.back()(dof % (6 * g), dof % (6 * g)) = 1.0;
+    w.group_rhs.head(ndof) = rhs;
+    w.group_rhs.tail(w.group_rhs.size() - ndof).setZero();
+    w.add_couplings(rod, drag, dt, [&w, g](int row, int col, const auto& block) {
+      using Block = std::decay_t<decltype(block)>;
+      const int r = row / (6 * g), c = col / (6 * g);
+      Eigen::MatrixXd& target = c == r ? w.group_diagonal[r] : (c == r + 1 ? w.group_upper[r] : w.group_lower[r]);
+      target.template block<Block::RowsAtCompileTime, Block::ColsAtCompileTime>(row - 6 * g * r, col - 6 * g * c) +=
+          block;
+    });
+    w.solve_grouped();
+    displacement = &w.group_rhs;
+    ++w.statistics.banded_steps;
+  } else if (w.method == LinearSolver::dense_lu || (automatic && (drag.coupled() || n <= 16))) {
     w.dense.setZero(ndof, ndof);
     w.add_couplings(rod, drag, dt, [&w](int row, int col, const auto& block) {
       using Block = std::decay_t<decltype(block)>;

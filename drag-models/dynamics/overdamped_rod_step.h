@@ -22,9 +22,12 @@
 // is factorised by block elimination (block Thomas algorithm, O(n), no
 // pivoting across blocks: R/dt + K is close to symmetric positive definite),
 // without allocation once the rod's size is known. Wall friction acts on
-// one sphere (a 6x6 block on the diagonal) and keeps the band. Couplings off
-// the band (a self-contact of a folding rod, bonds of multi-sphere sections)
-// take a sparse LU; a non-local (dense 3n x 3n) resistance takes a dense LU, which
+// one sphere (a 6x6 block on the diagonal) and keeps the band. Bonds that
+// join spheres up to g <= 8 apart in the numbering (multi-sphere sections:
+// g = spheres per section) make it block-tridiagonal in groups of g spheres
+// (6g x 6g blocks, the same elimination with dense block LUs). Couplings
+// off these bands (a self-contact of a folding rod between spheres further
+// apart, wider bonds) take a sparse LU; a non-local (dense 3n x 3n) resistance takes a dense LU, which
 // is then the step's O(n^3) cost.
 #pragma once
 
@@ -79,7 +82,7 @@ struct OverdampedSolverStatistics {
   double bond_seconds = 0.0;     // bond loads and Jacobians [s]
   double contact_seconds = 0.0;  // wall and self-contacts (search and Hertz laws) [s]
   double solve_seconds = 0.0;    // assembly, factorisation, substitution, update [s]
-  long banded_steps = 0;         // steps solved block-tridiagonally
+  long banded_steps = 0;         // steps solved block-tridiagonally (spheres or groups of spheres)
   long sparse_steps = 0;         // steps solved by the sparse LU
   long dense_steps = 0;          // steps solved by a dense LU
 };
@@ -95,6 +98,11 @@ OverdampedRod make_overdamped_rod(const RodLayout& layout, const BeamBondMateria
 // Keep one solver per rod (it is tied to the rod's numbering).
 class OverdampedRodSolver {
  public:
+  // How the step's linear system is solved: by the cheapest method its
+  // structure allows (automatic), or always by the general sparse or dense
+  // LU (to check the structured paths against).
+  enum class LinearSolver { automatic, sparse_lu, dense_lu };
+
   OverdampedRodSolver();
   ~OverdampedRodSolver();
   OverdampedRodSolver(OverdampedRodSolver&&) noexcept;
@@ -114,6 +122,7 @@ class OverdampedRodSolver {
   int pattern_analyses() const;
 
   const OverdampedSolverStatistics& statistics() const;
+  void set_linear_solver(LinearSolver method);
 
  private:
   struct Workspace;

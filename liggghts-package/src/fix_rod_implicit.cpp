@@ -30,6 +30,8 @@
 
 #include <mpi.h>
 
+#include <chrono>
+#include <string>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -146,10 +148,18 @@ void FixRodImplicit::init() {
   }
 }
 
+hsrod::OverdampedSolverStatistics FixRodImplicit::solver_statistics() const {
+  hsrod::OverdampedSolverStatistics sum;
+  for (const auto &entry : solvers_by_rod_) hsrod::accumulate(sum, entry.second.statistics());
+  return sum;
+}
+
 void FixRodImplicit::setup(int) {
   // Rods are counted afresh at each run's start: what the script deleted
   // between runs is its business; what goes missing during a run is an error.
   census_ = RodCensus();
+  cost_ = hsrod::StepCost();
+  solver_statistics_at_setup_ = solver_statistics();
   if (reported_) return;
   reported_ = true;
   if (comm->me == 0) {
@@ -168,6 +178,9 @@ void FixRodImplicit::setup(int) {
 }
 
 void FixRodImplicit::initial_integrate(int) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point step_start = Clock::now();
+  const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   hsrod::RodHydrodynamics &hydro = drag_->hydrodynamics();
   const hsrod::RodBondSet &bond_set = bonds_->bond_set();
   RodGather gather(lmp);
@@ -199,7 +212,10 @@ void FixRodImplicit::initial_integrate(int) {
     }
     const hsrod::RodGeometry geometry = rod_geometry(hydro, entry.first, spheres);
     hsrod::RodDrag drag;
+    const Clock::time_point drag_start = Clock::now();
     hydro.loads(geometry, drag);
+    cost_.drag_seconds += seconds_since(drag_start);
+    cost_.sphere_steps += n;
 
     const std::vector<Eigen::Vector3d> before = rod.positions;
     // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
@@ -209,9 +225,11 @@ void FixRodImplicit::initial_integrate(int) {
     if (guard_) {
       // Accuracy guard: substeps (drag re-evaluated at each) or a refusal.
       auto drag_at = [&](const hsrod::OverdampedRod &moved, hsrod::RodDrag &out) {
+        const Clock::time_point substep_drag_start = Clock::now();
         hsrod::RodGeometry g = geometry;
         g.positions = moved.positions;
         hydro.loads(g, out);
+        cost_.drag_seconds += seconds_since(substep_drag_start);
       };
       try {
         hsrod::GuardedStepReport report =
@@ -288,6 +306,8 @@ void FixRodImplicit::initial_integrate(int) {
       drag_->store_loads(i, drag.driving_force[k], result.hydrodynamic_forces[k], torque);
     }
   }
+  ++cost_.steps;
+  cost_.total_seconds += seconds_since(step_start);
   largest_displacement_ = largest;
   wall_force_ = wall_force;
   contacts_ = contacts;
@@ -304,6 +324,17 @@ void FixRodImplicit::initial_integrate(int) {
     error->warning(FLERR, msg);
     warned_ = true;
   }
+}
+
+// The cost model of the run (issue 13): time per step and per sphere-step,
+// and where it went.
+void FixRodImplicit::post_run() {
+  if (cost_.steps == 0) return;
+  cost_.solver = hsrod::difference(solver_statistics(), solver_statistics_at_setup_);
+  if (comm->me != 0) return;
+  const std::string line = "fix rod/implicit cost: " + cost_.report() + "\n";
+  if (screen) fputs(line.c_str(), screen);
+  if (logfile) fputs(line.c_str(), logfile);
 }
 
 double FixRodImplicit::compute_vector(int n) {

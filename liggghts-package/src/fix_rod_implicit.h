@@ -21,6 +21,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 
 #include "dynamics/guarded_step.h"
 #include "dynamics/overdamped_rod_step.h"
+#include "dynamics/step_cost_report.h"
 
 #include <map>
 #include <set>
@@ -52,6 +53,7 @@ class FixRodImplicit : public Fix {
   void init();
   void setup(int);
   void initial_integrate(int);
+  void post_run();
   double compute_vector(int);
   void write_restart(FILE *);
   void restart(char *);
@@ -81,6 +83,12 @@ class FixRodImplicit : public Fix {
   // restart files: a fresh workspace gives the same step (tested), while
   // the contact records above are written (write_restart).
   std::map<int, hsrod::OverdampedRodSolver> solvers_by_rod_;
+  // Cost model of the current run (printed by post_run): wall times of the
+  // whole integrator and of the drag model, the solvers' split from their
+  // statistics at setup and at the end (dynamics/step_cost_report.h).
+  hsrod::StepCost cost_;
+  hsrod::OverdampedSolverStatistics solver_statistics_at_setup_;
+  hsrod::OverdampedSolverStatistics solver_statistics() const;
   bool reported_;                // set-up report printed once, not per run
   void resolve_partners();
   RodCensus census_;             // spheres per rod as first seen: lost atoms are an error

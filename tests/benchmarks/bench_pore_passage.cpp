@@ -126,8 +126,13 @@ void BM_ExplicitPassage(benchmark::State &state, const std::string model) {
 
 // Cost per sphere-step of the implicit step against N (straight channel:
 // no grid), for the local levels.
-void BM_CostPerSphereStep(benchmark::State &state, const std::string model) {
+// `rows` > 1: a rod of rows x rows spheres per section (create_rod's
+// `section 2x2`), N spheres in N / rows^2 sections.
+void BM_CostPerSphereStep(benchmark::State &state, const std::string model, int rows = 1) {
   const int n = static_cast<int>(state.range(0));
+  const int per_section = rows * rows;
+  const std::string section =
+      rows > 1 ? " section " + std::to_string(rows) + "x" + std::to_string(rows) : std::string();
   const double length = (n + 20) * kD;
   const int steps = 50;
   for (auto _ : state) {
@@ -139,10 +144,12 @@ void BM_CostPerSphereStep(benchmark::State &state, const std::string model) {
                 "create_box 1 box",
                 // No pair style: nsq avoids binning a metre-scale skin over a 20 um gap.
                 "neighbor 1e-4 nsq",
-                "create_rod spheres " + std::to_string(n) + " diameter 3e-6 type 1 density 1170 centre " +
+                "create_rod spheres " + std::to_string(n / per_section) + section +
+                    " diameter 3e-6 type 1 density 1170 centre " +
                     num(0.5 * length) + " " + num(0.5 * length) + " 10e-6 angle 45",
                 "fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3",
-                "fix drag all hele_shaw/drag mean_velocity 0.03 viscosity 1e-3 model " + model,
+                "fix drag all hele_shaw/drag mean_velocity 0.03 viscosity 1e-3 model " + model +
+                    (rows > 1 ? " section " + std::to_string(per_section) : std::string()),
                 "fix step all rod/implicit bonds bonds drag drag", "timestep 4e-6", "run 0"});
     state.ResumeTiming();
     s.command("run " + std::to_string(steps) + " pre no post no");
@@ -226,6 +233,7 @@ BENCHMARK_CAPTURE(BM_ImplicitPassage, level4_twoway_cells2, std::string("twoway 
 BENCHMARK_CAPTURE(BM_ExplicitPassage, level2_explicit_at_limit, std::string("local"))->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_CostPerSphereStep, level1_isotropic, std::string("isotropic"))->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_CostPerSphereStep, level2_local, std::string("local"))->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_CostPerSphereStep, level2_local_section2x2, std::string("local"), 2)->Arg(80)->Arg(200)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);

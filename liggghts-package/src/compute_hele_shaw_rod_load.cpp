@@ -31,7 +31,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <set>
 
 using namespace LAMMPS_NS;
 
@@ -77,14 +76,7 @@ void ComputeHeleShawRodLoad::find_drag() {
   }
 }
 
-void ComputeHeleShawRodLoad::find_rods() {
-  std::set<int> local;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && atom->molecule[i] > 0) local.insert(atom->molecule[i]);
-  const std::vector<int> all = allgather_all(world, comm->nprocs, std::vector<int>(local.begin(), local.end()));
-  const std::set<int> unique(all.begin(), all.end());
-  rod_ids_.assign(unique.begin(), unique.end());
-}
+void ComputeHeleShawRodLoad::find_rods() { rod_ids_ = RodGather(lmp).rod_ids(groupbit); }
 
 void ComputeHeleShawRodLoad::init() {
   find_drag();

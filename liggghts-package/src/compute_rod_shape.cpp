@@ -39,7 +39,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
-#include <set>
 
 using namespace LAMMPS_NS;
 
@@ -117,15 +116,7 @@ void ComputeRodShape::init() {
     error->all(FLERR, "compute rod/shape: the number of rods changed since the compute was defined");
 }
 
-void ComputeRodShape::find_rods() {
-  std::set<int> local;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && atom->molecule[i] > 0) local.insert(atom->molecule[i]);
-  std::vector<int> mine(local.begin(), local.end());
-  const std::vector<int> all = allgather_all(world, comm->nprocs, mine);
-  std::set<int> unique(all.begin(), all.end());
-  rod_ids_.assign(unique.begin(), unique.end());
-}
+void ComputeRodShape::find_rods() { rod_ids_ = RodGather(lmp).rod_ids(groupbit); }
 
 void ComputeRodShape::measure() {
   if (last_step_ == update->ntimestep) return;

@@ -7,6 +7,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <set>
 
 using namespace LAMMPS_NS;
 
@@ -80,4 +81,13 @@ void RodGather::gather(int groupbit, const RodBondRecords *bond_fix) {
   for (auto &rod : rods)
     std::sort(rod.second.begin(), rod.second.end(),
               [](const GatheredSphere &a, const GatheredSphere &b) { return a.tag < b.tag; });
+}
+
+std::vector<int> RodGather::rod_ids(int groupbit) {
+  std::set<int> local;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && atom->molecule[i] > 0) local.insert(atom->molecule[i]);
+  const std::vector<int> all = allgather_all(world, comm->nprocs, std::vector<int>(local.begin(), local.end()));
+  const std::set<int> unique(all.begin(), all.end());
+  return std::vector<int>(unique.begin(), unique.end());
 }

@@ -46,6 +46,10 @@ class RodGather : protected Pointers {
   // spheres sorted by tag.
   void gather(int groupbit, const RodBondRecords *bonds);
   std::map<int, std::vector<GatheredSphere>> rods;
+
+  // Sorted molecule IDs (> 0) of the group's spheres on all procs, the same
+  // list on every proc: the rows of the per-rod computes.
+  std::vector<int> rod_ids(int groupbit);
 };
 
 template <typename T>

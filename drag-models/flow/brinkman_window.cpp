@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -151,6 +152,7 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
   lu->compute(a);
   if (lu->info() != Eigen::Success) throw std::runtime_error("BrinkmanWindow: sparse LU factorisation failed");
   lu_ = std::move(lu);
+  pressure_unknown_ = std::move(pressure);
 }
 
 BrinkmanWindow BrinkmanWindow::translated(double dx, double dy) const {
@@ -191,6 +193,36 @@ Eigen::MatrixXd BrinkmanWindow::solve(const Eigen::MatrixXd& node_forces) const 
   rhs.topRows(unknowns_) = scale * node_forces;
   const Eigen::MatrixXd x = lu_->solve(rhs);
   return x.topRows(unknowns_);
+}
+
+int BrinkmanWindow::u_unknown(int i, int j) const {
+  const WindowLattice& g = lattice_;
+  if (i < 0 || i > g.nx || j < 0 || j >= g.ny) return -1;
+  return u_unknown_[i * g.ny + j];
+}
+
+int BrinkmanWindow::v_unknown(int i, int j) const {
+  const WindowLattice& g = lattice_;
+  if (i < 0 || i >= g.nx || j < 0 || j > g.ny) return -1;
+  return v_unknown_[i * (g.ny + 1) + j];
+}
+
+Eigen::VectorXd BrinkmanWindow::solve_with_pressure(const Eigen::VectorXd& node_forces,
+                                                    std::vector<double>& cell_pressure) const {
+  if (node_forces.size() != unknowns_)
+    throw std::invalid_argument("BrinkmanWindow::solve_with_pressure: expected " + std::to_string(unknowns_) +
+                                " forces");
+  const int n = static_cast<int>(lu_->rows());
+  const double scale = gap_height_ / (viscosity_ * lattice_.h * lattice_.h);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+  rhs.head(unknowns_) = scale * node_forces;
+  const Eigen::VectorXd x = lu_->solve(rhs);
+  // The unknowns are p* = p H / mu (lengths in H, momentum rows times H^2 / mu).
+  const double to_pascal = viscosity_ / gap_height_;
+  cell_pressure.assign(pressure_unknown_.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t c = 0; c < pressure_unknown_.size(); ++c)
+    if (pressure_unknown_[c] >= 0) cell_pressure[c] = to_pascal * x[pressure_unknown_[c]];
+  return x.head(unknowns_);
 }
 
 }  // namespace hsrod

@@ -76,12 +76,26 @@ class BrinkmanWindow {
   // nodes()), spread uniformly over the node's cell area and the gap height.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& node_forces) const;
 
+  // Read access for field output (flow/window_flow_field.h).
+  // Unknown of the u node (i, j), 0 <= i <= nx, 0 <= j < ny, and of the v
+  // node (i, j), 0 <= i < nx, 0 <= j <= ny; -1 for nodes in walls, on the
+  // window edges or off the lattice.
+  int u_unknown(int i, int j) const;
+  int v_unknown(int i, int j) const;
+  // As solve() for one force column, also returning the disturbance pressure
+  // p' [Pa] per cell (index i * ny + j, centre (x0 + (i + 1/2) h,
+  // y0 + (j + 1/2) h)), NaN in cells without an open face. p' is fixed to 0
+  // at the first such cell of each closed fluid region (the system's
+  // gauge).
+  Eigen::VectorXd solve_with_pressure(const Eigen::VectorXd& node_forces, std::vector<double>& cell_pressure) const;
+
  private:
   WindowLattice lattice_;
   double gap_height_;  // H [m]
   double viscosity_;   // mu [Pa s]
   std::vector<WindowNode> nodes_;
   std::vector<int> u_unknown_, v_unknown_;  // per lattice node, -1 if not fluid
+  std::vector<int> pressure_unknown_;        // per cell (i * ny + j), -1 without an open face
   int unknowns_ = 0;
   bool has_walls_ = false;
   // Sparse LU (SuiteSparse KLU): about 2x faster to factorise and 4x faster

@@ -59,7 +59,8 @@ FieldLattice planform_lattice(const ChannelGeometry& g, double spacing, double z
   return l;
 }
 
-FieldSamples sample_field(const BackgroundFlow& flow, const FieldLattice& l, double z_bottom) {
+FieldSamples sample_field(const BackgroundFlow& flow, const FieldLattice& l, double z_bottom,
+                          const std::vector<WindowFlowField>& disturbances) {
   FieldSamples s;
   const long n = l.points();
   s.velocity.assign(n, Eigen::Vector3d::Zero());
@@ -71,7 +72,11 @@ FieldSamples sample_field(const BackgroundFlow& flow, const FieldLattice& l, dou
   for (int j = 0; j < l.ny; ++j)
     for (int i = 0; i < l.nx; ++i) {
       const Eigen::Vector3d p = l.point(i, j, 0);
-      const FlowSample f = sample_flow(flow, p.head<2>());
+      FlowSample f = sample_flow(flow, p.head<2>());
+      if (f.in_fluid && !disturbances.empty()) {
+        f.velocity += disturbance_velocity(disturbances, p.x(), p.y());
+        f.pressure += disturbance_pressure(disturbances, p.x(), p.y());
+      }
       for (int k = 0; k < l.nz; ++k) {
         const long at = k * plane + static_cast<long>(j) * l.nx + i;
         const double profile = l.nz > 1 ? BackgroundFlow::gap_profile(l.z0 + k * l.hz - z_bottom, gap) : 1.0;

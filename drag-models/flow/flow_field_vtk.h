@@ -8,6 +8,7 @@
 #pragma once
 
 #include "flow/background_flow.h"
+#include "flow/window_flow_field.h"
 
 #include <Eigen/Core>
 
@@ -47,8 +48,12 @@ struct FieldSamples {
 
 // Samples `flow` on `lattice`. With lattice.nz > 1 the velocity is the 3-D
 // reconstruction at each layer's height above `z_bottom` [m] (the lower gap
-// wall), else the gap average.
-FieldSamples sample_field(const BackgroundFlow& flow, const FieldLattice& lattice, double z_bottom);
+// wall), else the gap average. `disturbances`: the rods' window flows at
+// level 4 (window_flow_field.h), added to the background's velocity and
+// pressure in the fluid (the 3-D reconstruction applies the same parabolic
+// profile to the sum, as the gap-averaged equations assume).
+FieldSamples sample_field(const BackgroundFlow& flow, const FieldLattice& lattice, double z_bottom,
+                          const std::vector<WindowFlowField>& disturbances = {});
 
 // Writes lattice + samples as a VTK XML ImageData file (ASCII, Float64 point
 // arrays "velocity" (3 components), "pressure", "speed", UInt8 "fluid";

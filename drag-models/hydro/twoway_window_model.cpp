@@ -104,6 +104,21 @@ TwoWayWindowModel::Footprint TwoWayWindowModel::footprint(const BrinkmanWindow& 
   return f;
 }
 
+Eigen::VectorXd TwoWayWindowModel::fluid_node_forces(const BrinkmanWindow& window,
+                                                     const std::vector<Eigen::Vector3d>& positions,
+                                                     const Eigen::VectorXd& sphere_forces) const {
+  if (sphere_forces.size() != 2 * static_cast<Eigen::Index>(positions.size()))
+    throw std::invalid_argument("twoway: fluid_node_forces needs 2 force components per sphere");
+  Eigen::VectorXd nodes = Eigen::VectorXd::Zero(window.unknowns());
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const Footprint f = footprint(window, positions[i]);
+    for (int a = 0; a < 2; ++a)
+      for (std::size_t k = 0; k < f.nodes[a].size(); ++k)
+        nodes[f.nodes[a][k]] -= f.weights[a][k] * sphere_forces[2 * static_cast<Eigen::Index>(i) + a];
+  }
+  return nodes;
+}
+
 // No wall or obstacle within a cell of the window rectangle (then the window
 // system is that of free space, the same for every such placement).
 bool TwoWayWindowModel::window_clear_of_walls(const WindowLattice& g, const ChannelGeometry& geometry) {

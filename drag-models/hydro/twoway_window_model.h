@@ -82,6 +82,11 @@ struct TwoWayWindowState : ModelState {
   TwoWayWindowStatistics statistics;
   double spacing = 0.0;  // lattice spacing h of the model [m], for the summary
   std::string work_summary() const override;
+  // The window of rod `rod_id` (RodGeometry::id) at its last update, null if none.
+  const BrinkmanWindow* window_of(int rod_id) const {
+    const auto it = rods.find(rod_id);
+    return it == rods.end() ? nullptr : it->second.window.get();
+  }
 };
 
 class TwoWayWindowModel : public LocalDragBase {
@@ -116,6 +121,13 @@ class TwoWayWindowModel : public LocalDragBase {
   // (the screened near field has decayed to e^-4 at 4 l; the Hele-Shaw dipole
   // far field of the rod falls off over its own length).
   double margin_for(double rod_extent) const;
+  // Forces [N] on the window's fluid nodes (rows as window.nodes()) for the
+  // in-plane forces `sphere_forces` [N] (x, y per sphere: 2n entries) that
+  // the fluid exerts on the spheres at `positions` [m]: their reaction,
+  // spread over each sphere's footprint as the model does (the source of
+  // the rod's disturbance flow, window.solve of it). Read-only; for output.
+  Eigen::VectorXd fluid_node_forces(const BrinkmanWindow& window, const std::vector<Eigen::Vector3d>& positions,
+                                    const Eigen::VectorXd& sphere_forces) const;
 
  private:
   struct Footprint {

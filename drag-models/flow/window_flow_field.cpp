@@ -1,0 +1,137 @@
+#include "flow/window_flow_field.h"
+
+#include <cmath>
+#include <utility>
+
+namespace hsrod {
+namespace {
+
+// Linear interpolation weights along one lattice axis with nodes 0..m-1 at
+// coordinate r [cells]: up to two (node, weight) pairs. With `half_edges`
+// the window edges lie half a cell outside the first and last nodes and
+// carry the value 0; otherwise r is clamped to the nodes.
+struct AxisWeights {
+  int node[2] = {-1, -1};
+  double weight[2] = {0.0, 0.0};
+};
+
+AxisWeights axis_weights(double r, int m, bool half_edges) {
+  AxisWeights w;
+  if (half_edges) {
+    if (r < -0.5 || r > m - 0.5) return w;
+    if (r < 0.0) {
+      w.node[0] = 0;
+      w.weight[0] = (r + 0.5) / 0.5;
+      return w;
+    }
+    if (r > m - 1) {
+      w.node[0] = m - 1;
+      w.weight[0] = (m - 0.5 - r) / 0.5;
+      return w;
+    }
+  }
+  r = std::min(std::max(r, 0.0), static_cast<double>(m - 1));
+  const int i0 = std::min(static_cast<int>(std::floor(r)), std::max(m - 2, 0));
+  const double f = r - i0;
+  w.node[0] = i0;
+  w.weight[0] = 1.0 - f;
+  if (i0 + 1 < m) {
+    w.node[1] = i0 + 1;
+    w.weight[1] = f;
+  }
+  return w;
+}
+
+}  // namespace
+
+WindowFlowField::WindowFlowField(const BrinkmanWindow& window, const Eigen::VectorXd& node_forces,
+                                 const ChannelGeometry& geometry)
+    : lattice_(window.lattice()) {
+  const WindowLattice& g = lattice_;
+  u_unknown_.resize((g.nx + 1) * g.ny);
+  v_unknown_.resize(g.nx * (g.ny + 1));
+  for (int i = 0; i <= g.nx; ++i)
+    for (int j = 0; j < g.ny; ++j) u_unknown_[i * g.ny + j] = window.u_unknown(i, j);
+  for (int i = 0; i < g.nx; ++i)
+    for (int j = 0; j <= g.ny; ++j) v_unknown_[i * (g.ny + 1) + j] = window.v_unknown(i, j);
+  node_velocity_ = window.solve_with_pressure(node_forces, cell_pressure_);
+  // Gauge: mean p' over the downstream column = 0.
+  auto column_mean = [&](int i) {
+    double sum = 0.0;
+    int count = 0;
+    for (int j = 0; j < g.ny; ++j) {
+      const double p = cell_pressure_[i * g.ny + j];
+      if (std::isnan(p)) continue;
+      sum += p;
+      ++count;
+    }
+    return count > 0 ? sum / count : 0.0;
+  };
+  const double downstream = column_mean(g.nx - 1);
+  for (double& p : cell_pressure_)
+    if (!std::isnan(p)) p -= downstream;
+  upstream_rise_ = column_mean(0);
+  const double tol = 1e-9 * g.h;
+  spans_channel_ = g.y0 <= geometry.y_lo() + tol && g.y0 + g.ny * g.h >= geometry.y_hi() - tol;
+}
+
+bool WindowFlowField::covers(double x, double y) const {
+  const WindowLattice& g = lattice_;
+  return x >= g.x0 && x <= g.x0 + g.nx * g.h && y >= g.y0 && y <= g.y0 + g.ny * g.h;
+}
+
+double WindowFlowField::node_value(int component, int i, int j) const {
+  const WindowLattice& g = lattice_;
+  const int k = component == 0 ? u_unknown_[i * g.ny + j] : v_unknown_[i * (g.ny + 1) + j];
+  return k >= 0 ? node_velocity_[k] : 0.0;
+}
+
+Eigen::Vector2d WindowFlowField::velocity(double x, double y) const {
+  if (!covers(x, y)) return Eigen::Vector2d::Zero();
+  const WindowLattice& g = lattice_;
+  const double s = (x - g.x0) / g.h, t = (y - g.y0) / g.h;
+  // u nodes: x at i h (the edge columns i = 0, nx carry no unknown), y half a cell off the edges.
+  const AxisWeights ux = axis_weights(s, g.nx + 1, false), uy = axis_weights(t - 0.5, g.ny, true);
+  const AxisWeights vx = axis_weights(s - 0.5, g.nx, true), vy = axis_weights(t, g.ny + 1, false);
+  Eigen::Vector2d u = Eigen::Vector2d::Zero();
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      if (ux.node[a] >= 0 && uy.node[b] >= 0)
+        u.x() += ux.weight[a] * uy.weight[b] * node_value(0, ux.node[a], uy.node[b]);
+      if (vx.node[a] >= 0 && vy.node[b] >= 0)
+        u.y() += vx.weight[a] * vy.weight[b] * node_value(1, vx.node[a], vy.node[b]);
+    }
+  return u;
+}
+
+double WindowFlowField::pressure(double x, double y) const {
+  const WindowLattice& g = lattice_;
+  if (!covers(x, y)) return spans_channel_ && x < g.x0 ? upstream_rise_ : 0.0;
+  const AxisWeights px = axis_weights((x - g.x0) / g.h - 0.5, g.nx, false);
+  const AxisWeights py = axis_weights((y - g.y0) / g.h - 0.5, g.ny, false);
+  double sum = 0.0, total = 0.0;
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      if (px.node[a] < 0 || py.node[b] < 0) continue;
+      const double p = cell_pressure_[px.node[a] * g.ny + py.node[b]];
+      const double w = px.weight[a] * py.weight[b];
+      if (std::isnan(p) || w <= 0.0) continue;
+      sum += w * p;
+      total += w;
+    }
+  return total > 0.0 ? sum / total : 0.0;
+}
+
+Eigen::Vector2d disturbance_velocity(const std::vector<WindowFlowField>& windows, double x, double y) {
+  Eigen::Vector2d u = Eigen::Vector2d::Zero();
+  for (const WindowFlowField& w : windows) u += w.velocity(x, y);
+  return u;
+}
+
+double disturbance_pressure(const std::vector<WindowFlowField>& windows, double x, double y) {
+  double p = 0.0;
+  for (const WindowFlowField& w : windows) p += w.pressure(x, y);
+  return p;
+}
+
+}  // namespace hsrod

@@ -1,6 +1,7 @@
 #include "flow/window_flow_field.h"
 
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace hsrod {
@@ -71,8 +72,22 @@ WindowFlowField::WindowFlowField(const BrinkmanWindow& window, const Eigen::Vect
   for (double& p : cell_pressure_)
     if (!std::isnan(p)) p -= downstream;
   upstream_rise_ = column_mean(0);
-  const double tol = 1e-9 * g.h;
-  spans_channel_ = g.y0 <= geometry.y_lo() + tol && g.y0 + g.ny * g.h >= geometry.y_hi() - tol;
+  // The most upstream section x = x0 + i h that has no fluid outside the
+  // window's y range (sampled every h / 4 towards the side walls).
+  closed_section_x_ = std::numeric_limits<double>::quiet_NaN();
+  const double y1 = g.y0 + g.ny * g.h, step = 0.25 * g.h;
+  auto fluid_outside = [&](double x) {
+    for (double y = geometry.y_lo() + 0.5 * step; y < g.y0; y += step)
+      if (geometry.signed_distance(x, y) > 0.0) return true;
+    for (double y = geometry.y_hi() - 0.5 * step; y > y1; y -= step)
+      if (geometry.signed_distance(x, y) > 0.0) return true;
+    return false;
+  };
+  for (int i = 0; i <= g.nx; ++i)
+    if (!fluid_outside(g.x0 + i * g.h)) {
+      closed_section_x_ = g.x0 + i * g.h;
+      break;
+    }
 }
 
 bool WindowFlowField::covers(double x, double y) const {
@@ -106,7 +121,7 @@ Eigen::Vector2d WindowFlowField::velocity(double x, double y) const {
 
 double WindowFlowField::pressure(double x, double y) const {
   const WindowLattice& g = lattice_;
-  if (!covers(x, y)) return spans_channel_ && x < g.x0 ? upstream_rise_ : 0.0;
+  if (!covers(x, y)) return x < closed_section_x_ ? upstream_rise_ : 0.0;  // false for NaN
   const AxisWeights px = axis_weights((x - g.x0) / g.h - 0.5, g.nx, false);
   const AxisWeights py = axis_weights((y - g.y0) / g.h - 0.5, g.ny, false);
   double sum = 0.0, total = 0.0;

@@ -8,17 +8,20 @@
 //
 // Pressure gauge: the window fixes p' at one cell; here p' is shifted so that
 // its mean over the downstream (x = x_max) column of cells is zero. A window
-// spanning the channel's width blocks no net flux (u' = 0 on its edges), so
-// the rod's pressure rise p'_up (the mean over the upstream column) holds
-// for the whole channel upstream of it at fixed flow rate:
-// upstream_rise() is added upstream of such a window (and nothing for a
-// window narrower than the channel, whose disturbance decays within it).
+// that, with the walls it covers, closes a cross-section of the channel (it
+// spans the width, or a pore throat between its cylinders) blocks no net
+// flux (u' = 0 on its edges), so at fixed flow rate the rod's pressure rise
+// p'_up (the mean over the upstream column) holds for the whole channel
+// upstream of that section: upstream_rise() is added there. Nothing is added
+// outside a window that closes no section (its disturbance is taken to have
+// decayed at its edges).
 #pragma once
 
 #include "flow/brinkman_window.h"
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <vector>
 
 namespace hsrod {
@@ -37,12 +40,15 @@ class WindowFlowField {
   // u' [m/s] at (x, y) [m]; zero outside the window.
   Eigen::Vector2d velocity(double x, double y) const;
   // p' [Pa] at (x, y) [m]: the window's pressure inside it, upstream_rise()
-  // upstream of a full-width window, 0 elsewhere.
+  // outside it upstream of the first section it closes, 0 elsewhere.
   double pressure(double x, double y) const;
   // Mean p' over the upstream column of cells minus that over the downstream
   // one [Pa] (the rod's pressure rise across the window).
   double upstream_rise() const { return upstream_rise_; }
-  bool spans_channel() const { return spans_channel_; }
+  // True when the window closes a cross-section of the channel; closed_section_x()
+  // [m] is the most upstream such section (NaN if none).
+  bool spans_channel() const { return !std::isnan(closed_section_x_); }
+  double closed_section_x() const { return closed_section_x_; }
   // The solution at the nodes (rows as the window's nodes()) [m/s] and per
   // cell [Pa] (NaN without fluid), after the gauge shift.
   const Eigen::VectorXd& node_velocity() const { return node_velocity_; }
@@ -55,7 +61,7 @@ class WindowFlowField {
   Eigen::VectorXd node_velocity_;
   std::vector<double> cell_pressure_;
   double upstream_rise_ = 0.0;
-  bool spans_channel_ = false;
+  double closed_section_x_;  // m, NaN if the window closes no section
 };
 
 // Sum of the disturbances of several windows at (x, y) [m] (Stokes flow is

@@ -1,14 +1,17 @@
 #!/usr/bin/python3
 """The pressure around a rod trapped at the pore (Braesel et al. 2024,
-Fig. 10c) from in.trapped_pressure's files: the gap pressure of the
-background flow (fix hele_shaw/field's flow_trapped_*.vti, read with VTK)
-near the pore, the trapped rod's spheres (trapped_rod.txt, last frame) over
-it, and the channel's pressure drop with and without the rod's load
-(compute hele_shaw/pressure_drop, from the TRAPPED_PRESSURE line of the
-run's screen output).
-What it is not: the pressure disturbed by the rod (the level-4 window
-field is not written yet); the rise is the reciprocal-theorem estimate
-from the rod's loads (doc/compute_hele_shaw_pressure_drop.txt).
+Fig. 10c) from in.trapped_pressure's files: left, the gap pressure of the
+flow disturbed by the trapped rod at level 4 (fix hele_shaw/field's
+flow_trapped_*.vti: the rod's window flow added to the background, read
+with VTK) near the pore with the rod's spheres (trapped_rod.txt, last
+frame) over it; right, the rod's pressure disturbance (minus the
+background, background_trapped_*.vti) with the disturbed flow's
+streamlines; in the title the channel's pressure drop with and without the
+rod's load (compute hele_shaw/pressure_drop, from the TRAPPED_PRESSURE
+line of the run's screen output).
+What it is not: a resolved 3-D pressure; the window flow is gap-averaged
+and its pressure counts the rod's obstruction forces only
+(doc/fix_hele_shaw_field.txt, Restrictions).
 Usage: hsrod -in in.trapped_pressure > log.trapped
        plot_trapped_pressure.py log.trapped trapped_pressure.png"""
 import glob
@@ -25,43 +28,70 @@ from vtk.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 log, out = sys.argv[1:3]
 line = [l for l in open(log, errors="replace") if l.startswith("TRAPPED_PRESSURE")][-1].split()
-values = dict(zip(line[1::2], map(float, line[2::2])))
+values_line = dict(zip(line[1::2], map(float, line[2::2])))
 
-reader = vtk.vtkXMLImageDataReader()
-reader.SetFileName(sorted(glob.glob("flow_trapped_*.vti"))[-1])
-reader.Update()
-img = reader.GetOutput()
-nx, ny, _ = img.GetDimensions()
+
+
+def last_frame(pattern):
+    reader = vtk.vtkXMLImageDataReader()
+    reader.SetFileName(sorted(glob.glob(pattern), key=lambda f: int(f.rsplit("_", 1)[1][:-4]))[-1])
+    reader.Update()
+    img = reader.GetOutput()
+    nx, ny, _ = img.GetDimensions()
+    data = {name: vtk_to_numpy(img.GetPointData().GetArray(name)) for name in ("pressure", "fluid", "velocity")}
+    return img, nx, ny, data
+
+
+img, nx, ny, field = last_frame("flow_trapped_[0-9]*.vti")
+_, _, _, background = last_frame("background_trapped_[0-9]*.vti")
 (x0, y0, _), (hx, hy, _) = img.GetOrigin(), img.GetSpacing()
-pressure = vtk_to_numpy(img.GetPointData().GetArray("pressure")).reshape(ny, nx)
-fluid = vtk_to_numpy(img.GetPointData().GetArray("fluid")).reshape(ny, nx)
+pressure = field["pressure"].reshape(ny, nx)
+disturbance = pressure - background["pressure"].reshape(ny, nx)
+fluid = field["fluid"].reshape(ny, nx)
+ux, uy = field["velocity"][:, 0].reshape(ny, nx), field["velocity"][:, 1].reshape(ny, nx)
 x, y = x0 + hx * np.arange(nx), y0 + hy * np.arange(ny)
 
 lines = open("trapped_rod.txt").read().split("\n")
 frames = [k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS")]
 n = int(lines[frames[-1] - 5])
 rod = np.array([[float(v) for v in lines[frames[-1] + 1 + m].split()[1:3]] for m in range(n)])
+# Pressure jump of the disturbance across the rod's middle (5 um up- and downstream of the sphere nearest y = 100 um).
+middle = rod[np.argmin(np.abs(rod[:, 1] - 100e-6))]
+j_mid = int(np.argmin(np.abs(y - middle[1])))
+jump = (disturbance[j_mid, int(np.argmin(np.abs(x - middle[0] + 5e-6)))]
+        - disturbance[j_mid, int(np.argmin(np.abs(x - middle[0] - 5e-6)))])
+print(f"rod middle at x = {middle[0] * 1e6:.1f} um: pressure disturbance jump across it {jump:.1f} Pa, "
+      f"disturbance range {disturbance[fluid == 1].min():.1f} .. {disturbance[fluid == 1].max():.1f} Pa")
 
 um = 1e6
-fig, ax = plt.subplots(figsize=(7.5, 5))
+fig, axes = plt.subplots(1, 2, figsize=(13, 5))
 keep = (x > 180e-6) & (x < 420e-6)
-mesh = ax.pcolormesh(x[keep] * um, y * um, np.ma.masked_where(fluid[:, keep] == 0, pressure[:, keep]),
-                     shading="gouraud", cmap="coolwarm")
-fig.colorbar(mesh, ax=ax, label="gap pressure p of the background flow [Pa]")
-ax.contour(x[keep] * um, y * um, np.ma.masked_where(fluid[:, keep] == 0, pressure[:, keep]), 15, colors="k",
-           linewidths=0.4)
-for cx, cy in ((300.0, 0.0), (300.0, 200.0)):
-    ax.add_patch(Circle((cx, cy), 85.0, facecolor="0.6", edgecolor="k"))
-for px, py in rod:
-    ax.add_patch(Circle((px * um, py * um), 1.5, facecolor="gold", edgecolor="k", lw=0.5))
-ax.set_xlim(180, 420)
-ax.set_ylim(0, 200)
-ax.set_aspect("equal")
-ax.set_xlabel("x [µm]")
-ax.set_ylabel("y [µm]")
-ax.set_title("Rod trapped at the pore (E = 15 MPa, L_rod = 2 d_pore); channel pressure drop\n"
-             f"{values['background_Pa']:.0f} Pa without the rod, +{values['rise_level4_Pa']:.0f} Pa with it at level 4 "
-             f"(+{values['rise_level2_Pa']:.0f} Pa at level 2)", fontsize=9)
+xs, ys = x[keep] * um, y * um
+wall = fluid[:, keep] == 0
+limit = np.abs(disturbance[:, keep][~wall]).max()
+panels = ((axes[0], pressure, "coolwarm", None, "gap pressure p, trapped rod at level 4 [Pa]"),
+          (axes[1], disturbance, "RdBu_r", (-limit, limit), "pressure disturbance of the rod p - p_bg [Pa]"))
+for ax, values, cmap, limits, label in panels:
+    shown = np.ma.masked_where(wall, values[:, keep])
+    mesh = ax.pcolormesh(xs, ys, shown, shading="gouraud", cmap=cmap,
+                         **({} if limits is None else dict(vmin=limits[0], vmax=limits[1])))
+    fig.colorbar(mesh, ax=ax, label=label, shrink=0.85)
+    ax.contour(xs, ys, shown, 15, colors="k", linewidths=0.4)
+    for cx, cy in ((300.0, 0.0), (300.0, 200.0)):
+        ax.add_patch(Circle((cx, cy), 85.0, facecolor="0.6", edgecolor="k"))
+    for px, py in rod:
+        ax.add_patch(Circle((px * um, py * um), 1.5, facecolor="gold", edgecolor="k", lw=0.5))
+    ax.set_xlim(180, 420)
+    ax.set_ylim(0, 200)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [µm]")
+    ax.set_ylabel("y [µm]")
+axes[1].streamplot(xs, ys, np.where(wall, 0.0, ux[:, keep]), np.where(wall, 0.0, uy[:, keep]), color="0.2",
+                   density=1.4, linewidth=0.5, arrowsize=0.6)
+fig.suptitle("Rod trapped at the pore (E = 15 MPa, L_rod = 2 d_pore); channel pressure drop "
+             f"{values_line['background_Pa']:.0f} Pa without the rod, +{values_line['rise_level4_Pa']:.0f} Pa with it "
+             f"at level 4 (+{values_line['rise_level2_Pa']:.0f} Pa at level 2); "
+             f"window pressure jump across the rod {jump:.0f} Pa", fontsize=9)
 fig.tight_layout()
 fig.savefig(out, dpi=120)
 print(f"wrote {out}")

@@ -9,7 +9,9 @@ BUILD_DIR holds hsrod_crosscheck_levels (built with -DHSROD_WITH_OPENFOAM=ON).
 "before" = the built-in table before the campaign (rod columns derived from
 level 3; recorded in calibration/data/confinement_defaults_before_campaign.txt),
 "after" = the campaign fit, calibration/data/confinement_campaign.txt
-(hsrod_fit_campaign; not yet the built-in default). Resolved data:
+(hsrod_fit_campaign; also the built-in default, ConfinementTable::default_table()).
+Level 2 scales the table's 10-sphere rod columns to other rod lengths with its
+n-law (hydro/local_models.cpp) in both runs. Resolved data:
 calibration/data/resolved_campaign_{series,profiles}.csv. Writes
 calibration/validation/crosscheck.md and crosscheck_*.png.
 Debian's python3 with python3-matplotlib (scripts/setup-debian.sh).
@@ -66,8 +68,9 @@ def main():
           "`calibration/data/resolved_campaign_series.csv`), finest mesh. Errors are model / resolved - 1.",
           "*before*: built-in table (rod columns derived from level 3, "
           "`calibration/data/confinement_defaults_before_campaign.txt`); *after*: the campaign fit "
-          "`calibration/data/confinement_campaign.txt`. Level 2 applies the table's 10-sphere rod columns to every "
-          "rod length (its n-law is not landed), so rods of 2 and 5 spheres are not calibrated at level 2.", "",
+          "`calibration/data/confinement_campaign.txt` (= the built-in default). Level 2 scales the table's 10-sphere rod "
+          "columns to other rod lengths with its n-law in both runs (the *before* rows of level 2 at n != 10 are "
+          "therefore not the old code's).", "",
           "## Worst errors per level (all resolved rows with n > 1 for profiles)", "", "```"]
     md += [l for log in logs for l in log.splitlines() if not l.startswith("wrote")]
     md += ["```", "", "## Totals per resolved row", ""]

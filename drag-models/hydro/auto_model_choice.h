@@ -1,9 +1,9 @@
 // The `auto` policy of the model keyword: the cheapest level whose error
 // against level 3 stays within a tolerance for this scene.
 //
-// Level 2 reproduces level 3's rigid-rod friction and drift (its
-// coefficients are level 3's rigid rod, default_coefficients.cpp), so it
-// suffices unless the rod bends: the bending load level 3 adds (the force per
+// Level 2's rigid-rod friction and drift are fitted to resolved runs
+// (default_coefficients.cpp), so it suffices unless the rod bends: the
+// bending load level 3 adds (the force per
 // sphere on the rod held at its start, minus the rod mean, across the rod)
 // times the compliance L^3 / (48 EI) of a simply supported beam
 // (Euler-Bernoulli, mid-span load) estimates the deflection that level 2

@@ -77,6 +77,13 @@ class ConfinementTable {
 // mid-plane velocity 3/2, with room for fitted values); all finite.
 std::string coefficient_range_problem(const ConfinementCoefficients& c);
 
+// Growth coefficient k of the per-sphere friction of a rod moving across its
+// axis with the rod's length, g = k beta^2 in the n-law of
+// hydro/confinement_forms.h, fitted to the resolved campaign together with
+// the built-in table (default_coefficients.cpp) [-]. Level 2 uses it to
+// scale the table's 10-sphere rod columns to other rod lengths.
+double perpendicular_growth_coefficient();
+
 // Faxen's series for a sphere midway between two parallel walls moving
 // parallel to them (Happel & Brenner 1965, eq. 7-4.28): friction over
 // 3 pi mu d as a function of a / l = beta (l = H/2 the distance to each wall).

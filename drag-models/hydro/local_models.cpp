@@ -1,6 +1,7 @@
 // Levels 1 and 2 of the ladder: local drag laws, one 3x3 block per sphere.
 #include "hydro/local_models.h"
 #include "common/math_constants.h"
+#include "hydro/confinement_forms.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,6 +64,26 @@ void LocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow,
   out.resize(rod.size());
   const auto tangents = rod.section_tangents();
   const ConfinementCoefficients& c = coefficients_;
+  // The table's rod columns are those of a rod of 10 sections; a rod of n
+  // sections gets the n-law of hydro/confinement_forms.h,
+  // c(n) = c_inf + (c_1 - c_inf - g)/n + g n (two ends carry the lone
+  // sphere's excess; across the axis the depth-averaged pressure in front of
+  // the chain adds g = k beta^2), for the friction per sphere (c_1 = 1) and
+  // the held load per sphere c lambda (c_1 = the lone sphere's lambda, g
+  // lambda), so that n = 1 is the lone sphere of level 1. The form and k are
+  // fitted to the resolved campaign (rods of 2, 5, 10 spheres at beta 0.15
+  // and 0.3; held out: 7 spheres at beta 0.25), calibration/data/
+  // confinement_campaign_fit.json.
+  const int n = rod.sections();
+  using confinement_form::rod_n_law;
+  using confinement_form::rod_n_law_asymptote;
+  const double beta = parameters_.beta(), ls = c.sphere_driving;
+  const double g_perp = confinement_form::rod_growth(beta, perpendicular_growth_coefficient());
+  const double c_par = rod_n_law(rod_n_law_asymptote(c.parallel_friction, 1.0, 0.0, 10), 1.0, 0.0, n);
+  const double c_perp = rod_n_law(rod_n_law_asymptote(c.perpendicular_friction, 1.0, g_perp, 10), 1.0, g_perp, n);
+  const double h_par = rod_n_law(rod_n_law_asymptote(c.parallel_friction * c.parallel_driving, ls, 0.0, 10), ls, 0.0, n);
+  const double h_perp = rod_n_law(rod_n_law_asymptote(c.perpendicular_friction * c.perpendicular_driving, ls, g_perp * ls, 10),
+                                  ls, g_perp * ls, n);
   for (int i = 0; i < rod.size(); ++i) {
     const Eigen::Vector3d& t = tangents[rod.section_of(i)];
     const Eigen::Matrix3d along = t * t.transpose();
@@ -70,9 +91,8 @@ void LocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow,
     const Eigen::Vector3d u = in_plane(flow.velocity(rod.positions[i].x(), rod.positions[i].y()));
     // Resistive-force theory with confinement: friction and driving differ
     // along and across the local tangent (Berthet et al. 2013).
-    out.resistance[i] = sphere_friction_ * (c.parallel_friction * along + c.perpendicular_friction * across);
-    out.driving_force[i] = sphere_friction_ * (c.parallel_friction * c.parallel_driving * along +
-                                               c.perpendicular_friction * c.perpendicular_driving * across) * u;
+    out.resistance[i] = sphere_friction_ * (c_par * along + c_perp * across);
+    out.driving_force[i] = sphere_friction_ * (h_par * along + h_perp * across) * u;
   }
   add_rotation(rod, flow, out);
 }

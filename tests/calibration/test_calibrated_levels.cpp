@@ -2,13 +2,15 @@
 // the resolved rodIbFoam campaign, calibration/data/confinement_campaign.txt,
 // hsrod_fit_campaign) against the resolved runs themselves (calibration/data/
 // resolved_campaign_series.csv, calibration/tools/campaign_analysis.py):
+//  - the built-in table (ConfinementTable::default_table()) is this fit;
 //  - level 2 reproduces the total friction and the held-in-flow load of
-//    rigid 10-sphere rods (the table's rod) along and across the flow within
-//    10 %, their force-free velocity within 3 % and r = U_perp / U_par
-//    within 1 %, at every calibrated beta;
+//    rigid rods of every resolved length (the table's 10-sphere columns and
+//    level 2's rod-length law) along and across the flow within 10 %, their
+//    force-free velocity within 3 % and r = U_perp / U_par within 1 %, at
+//    every calibrated beta;
 //  - the same for the rod left out of the fit (role "heldout": 7 spheres at
 //    beta 0.25, neither fitted): the table is a fit (smooth forms in beta
-//    and n), not a lookup; level 2 applies the 10-sphere columns to it;
+//    and n), not a lookup;
 //  - a lone sphere at every level is the resolved confined sphere (1 %).
 #include <gtest/gtest.h>
 
@@ -86,14 +88,33 @@ void expect_rod(const Resolved& s, const std::string& level) {
 
 }  // namespace
 
+TEST(calibration_CalibratedLevels, BuiltInTableIsTheShippedFit) {
+  const hsrod::ConfinementTable built_in = hsrod::ConfinementTable::default_table();
+  const auto& shipped = calibrated_table().rows();
+  ASSERT_EQ(built_in.rows().size(), shipped.size());
+  for (std::size_t k = 0; k < shipped.size(); ++k) {
+    const auto& a = built_in.rows()[k];
+    const auto& b = shipped[k];
+    EXPECT_NEAR(a.beta, b.beta, 1e-12);
+    EXPECT_NEAR(a.c.sphere_friction, b.c.sphere_friction, 1e-8) << "beta " << b.beta;
+    EXPECT_NEAR(a.c.sphere_driving, b.c.sphere_driving, 1e-8) << "beta " << b.beta;
+    EXPECT_NEAR(a.c.parallel_friction, b.c.parallel_friction, 1e-8) << "beta " << b.beta;
+    EXPECT_NEAR(a.c.perpendicular_friction, b.c.perpendicular_friction, 1e-8) << "beta " << b.beta;
+    EXPECT_NEAR(a.c.parallel_driving, b.c.parallel_driving, 1e-8) << "beta " << b.beta;
+    EXPECT_NEAR(a.c.perpendicular_driving, b.c.perpendicular_driving, 1e-8) << "beta " << b.beta;
+  }
+}
+
 TEST(calibration_CalibratedLevels, Level2ReproducesTheResolvedRigidRods) {
-  int rods = 0;
+  int rods = 0, tens = 0;
   for (const auto& s : resolved_series())
-    if (s.n == 10 && s.spacing == 1.0 && s.role == "fit") {
+    if (s.n > 1 && s.spacing == 1.0 && s.role == "fit") {
       expect_rod(s, "local");
       ++rods;
+      tens += s.n == 10;
     }
-  EXPECT_GE(rods, 2) << "resolved 10-sphere rods at two or more beta expected";
+  EXPECT_GE(tens, 2) << "resolved 10-sphere rods at two or more beta expected";
+  EXPECT_GE(rods, 6) << "resolved rods of several lengths expected";
 }
 
 TEST(calibration_CalibratedLevels, Level2PredictsHeldOutRods) {

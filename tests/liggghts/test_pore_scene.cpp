@@ -113,9 +113,9 @@ TEST(PoreScene, SoftRodDeflectsMostAtThePoreOutlet) {
 }
 
 namespace {
-// Outcome class (compute rod/shape column 14) after `duration` for a stiff
-// rod of n spheres at angle alpha through the pore.
-double pore_outcome(int n, double alpha_deg, double duration) {
+// Outcome class (compute rod/shape column 14) after `duration` for a rod of
+// n spheres and Young's modulus E at angle alpha through the pore.
+double pore_outcome(int n, double alpha_deg, double duration, const std::string &youngs_modulus = "15e6") {
   setenv("HSROD_CACHE_DIR", HSROD_TEST_CACHE_DIR, 1);
   LiggghtsSession s;
   s.commands({"units si", "atom_style hybrid granular molecular", "atom_modify map array sort 0 0", "boundary f f f",
@@ -123,7 +123,7 @@ double pore_outcome(int n, double alpha_deg, double duration) {
               "region box block 0 600e-6 0 200e-6 0 20e-6 units box", "create_box 1 box",
               "create_rod spheres " + std::to_string(n) + " diameter 3e-6 type 1 density 1170 centre 150e-6 100e-6 "
               "10e-6 angle " + num(alpha_deg),
-              "fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3",
+              "fix bonds all rod/bonds youngs_modulus " + youngs_modulus + " poisson_ratio 0.3",
               "fix drag all hele_shaw/drag channel 600e-6 200e-6 20e-6 origin 0 0 0 pore 85e-6 300e-6 "
               "viscosity 1e-3 fluid_density 1170 reynolds 2 model local",
               "fix step all rod/implicit bonds bonds drag drag",
@@ -139,9 +139,15 @@ double pore_outcome(int n, double alpha_deg, double duration) {
 
 TEST(PoreScene, OutcomeClassesOfThePaper) {
   // Braesel et al. 2024, Sec. 3.5: passage without wall contact, passage
-  // with wall contact, clogging. A rod as long as the pore is wide
-  // (L_Rod/d_pore = 1, alpha = 10 deg) passes without touching; a rod three
-  // times the pore width across the flow touches the pore walls and passes.
+  // with wall contact, clogging (at large size ratio and stiffness). A rod
+  // as long as the pore is wide (L_Rod/d_pore = 1, alpha = 10 deg) passes
+  // without touching; a stiff (15 MPa) rod three times the pore width across
+  // the flow is trapped, as the paper's Fig. 10(c) shows for 15 MPa rods
+  // already at L_Rod/d_pore = 2 (this case passed with contact with the
+  // level-2 columns derived from level 3, whose load across a rod was ~45 %
+  // above the resolved runs; the calibrated table, issue 14, traps it); the
+  // same rod at 1.5 MPa bends against the cylinders and escapes: contact passage.
   EXPECT_EQ(pore_outcome(10, 10.0, 5e-3), 1.0);
-  EXPECT_EQ(pore_outcome(30, 0.0, 7e-3), 2.0);
+  EXPECT_EQ(pore_outcome(30, 0.0, 7e-3), 3.0);
+  EXPECT_EQ(pore_outcome(30, 0.0, 5e-3, "1.5e6"), 2.0);
 }

@@ -2,6 +2,7 @@
 //
 //   hsrod_crosscheck_levels SERIES.csv PROFILES.csv OUT.csv [--table FILE] [--label TEXT]
 //                           [--levels isotropic,local,nonlocal,twoway] [--write-table FILE]
+//                           [--error-record CSV] [--error-record-cpp CPP]
 //
 // SERIES.csv / PROFILES.csv: calibration/data/resolved_campaign_{series,profiles}.csv
 // (campaign_analysis.py). For every resolved row of spheres and every level,
@@ -11,6 +12,11 @@
 // force-free velocities lambda_par/perp, r, and the RMS of the per-sphere
 // profile error over the profile's mean magnitude. OUT.csv: one row per
 // (label, level, beta, n, spacing, quantity). Prints a summary per level.
+// --error-record / --error-record-cpp: the error model of `auto`
+// (hydro/auto_model_choice.h) from the fitted rods (role "fit", spacing 1):
+// per level, beta and n the largest |error| of the totals, of the free
+// velocities and of r, as CSV (calibration/data/level_error_record.csv) and
+// as the built-in record (drag-models/hydro/auto_model_choice_record.cpp).
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -21,6 +27,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "hydro/model_registry.h"
 #include "level_crosscheck.h"
 
 using namespace hsrod::calib;
@@ -70,8 +77,10 @@ int main(int argc, char** argv) {
   app.add_option("--table", table_path, "coefficient file (default: the built-in table)");
   app.add_option("--label", label, "label of this table in the output");
   app.add_option("--levels", levels, "models to check");
-  std::string write_table;
+  std::string write_table, record_csv, record_cpp;
   app.add_option("--write-table", write_table, "also write the table in use to this file");
+  app.add_option("--error-record", record_csv, "write the error record of auto (CSV)");
+  app.add_option("--error-record-cpp", record_cpp, "write the error record of auto (C++ source)");
   CLI11_PARSE(app, argc, argv);
   try {
     const hsrod::ConfinementTable table =
@@ -86,6 +95,13 @@ int main(int argc, char** argv) {
     std::ofstream out(out_path);
     out << "label,level,beta,n,spacing,role,quantity,resolved,model,rel_error\n";
     out.precision(8);
+    struct RecordRow {
+      int level;
+      std::string beta;
+      int n;
+      double force, velocity, r;
+    };
+    std::vector<RecordRow> record;
     for (const auto& level : split(levels)) {
       double worst_tot = 0, worst_lambda = 0, worst_r = 0, worst_prof = 0;
       for (const auto& s : series) {
@@ -96,6 +112,7 @@ int main(int argc, char** argv) {
                                                     {"D_par", m.D_par()},         {"D_perp", m.D_perp()},
                                                     {"lambda_par", m.lambda_par()}, {"lambda_perp", m.lambda_perp()},
                                                     {"r", m.r()}};
+        RecordRow rec{hsrod::find_model(level) ? hsrod::find_model(level)->level : 0, s.at("beta"), n, 0, 0, 0};
         for (const auto& [name, val] : q) {
           const double res = std::stod(s.at(name));
           const double err = val / res - 1.0;
@@ -105,7 +122,10 @@ int main(int argc, char** argv) {
           if (nm[0] == 'R' || nm[0] == 'D') worst_tot = std::max(worst_tot, std::abs(err));
           else if (nm == "r") worst_r = std::max(worst_r, std::abs(err));
           else worst_lambda = std::max(worst_lambda, std::abs(err));
+          double& slot = nm[0] == 'R' || nm[0] == 'D' ? rec.force : nm == "r" ? rec.r : rec.velocity;
+          slot = std::max(slot, std::abs(err));
         }
+        if (s.at("role") == "fit" && spacing == 1.0 && rec.level > 0) record.push_back(rec);
         const std::pair<const char*, const std::vector<double>*> pr[] = {{"friction_par", &m.friction_par},
                                                                          {"friction_perp", &m.friction_perp},
                                                                          {"driving_par", &m.driving_par},
@@ -133,6 +153,39 @@ int main(int argc, char** argv) {
                   label.c_str(), level.c_str(), 100 * worst_tot, 100 * worst_lambda, 100 * worst_r, 100 * worst_prof);
     }
     std::printf("wrote %s\n", out_path.c_str());
+    const std::string provenance = "hsrod_crosscheck_levels --error-record: levels against the resolved campaign "
+                                   "(" + series_path.substr(series_path.rfind('/') + 1) + ", rigid rods, role fit), "
+                                   "table: " + table.source();
+    if (!record_csv.empty()) {
+      std::ofstream f(record_csv);
+      f << "# " << provenance << "\n# largest |model / resolved - 1| of the totals (R, D along and across), of the "
+           "force-free velocities and of r\nlevel,beta,n,force_error,velocity_error,r_error\n";
+      f.precision(6);
+      for (const auto& r : record)
+        f << r.level << ',' << r.beta << ',' << r.n << ',' << r.force << ',' << r.velocity << ',' << r.r << '\n';
+      std::printf("wrote %s\n", record_csv.c_str());
+    }
+    if (!record_cpp.empty()) {
+      std::ofstream f(record_cpp);
+      f << "// The cross-check record of `auto` (hydro/auto_model_choice.h), written by (one command)\n"
+           "//   build/hsrod_crosscheck_levels calibration/data/resolved_campaign_series.csv\n"
+           "//     calibration/data/resolved_campaign_profiles.csv build/crosscheck/record.csv\n"
+           "//     --error-record calibration/data/level_error_record.csv\n"
+           "//     --error-record-cpp drag-models/hydro/auto_model_choice_record.cpp\n"
+           "// Do not edit: regenerate when a level or the table changes (test\n"
+           "// calibration_AutoErrorModel.BuiltInRecordIsTheCurrentCrossCheck fails otherwise).\n"
+           "#include \"hydro/auto_model_choice.h\"\n\nnamespace hsrod {\n\n"
+           "const char* level_error_record_provenance() {\n  return \"" << provenance << "\";\n}\n\n"
+           "const std::vector<LevelErrorRow>& level_error_record() {\n"
+           "  // level, beta, n, force_error, velocity_error, r_error\n"
+           "  static const std::vector<LevelErrorRow> rows = {\n";
+      f.precision(6);
+      for (const auto& r : record)
+        f << "      {" << r.level << ", " << r.beta << ", " << r.n << ", " << r.force << ", " << r.velocity << ", " << r.r
+          << "},\n";
+      f << "  };\n  return rows;\n}\n\n}  // namespace hsrod\n";
+      std::printf("wrote %s\n", record_cpp.c_str());
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hsrod_crosscheck_levels: %s\n", e.what());
     return 1;

@@ -4,15 +4,41 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <map>
 
 namespace hsrod {
 
-AutoModelChoice choose_auto_model(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow,
-                                  const HydrodynamicModel& level3, double bending_stiffness, double tolerance) {
-  AutoModelChoice choice;
-  choice.model = find_model_level(2)->name;
-  choice.flexible = bending_stiffness > 0.0;
-  if (!choice.flexible) return choice;
+namespace {
+
+struct ErrorTriple {
+  double force = 0, velocity = 0, r = 0;
+};
+
+ErrorTriple mix(const ErrorTriple& a, const ErrorTriple& b, double w) {
+  return {a.force + w * (b.force - a.force), a.velocity + w * (b.velocity - a.velocity), a.r + w * (b.r - a.r)};
+}
+
+// Linear interpolation in n over one beta's rows (sorted by n), clamped.
+ErrorTriple along_n(const std::map<int, ErrorTriple>& by_n, int n, bool& extrapolated) {
+  if (n <= by_n.begin()->first) {
+    extrapolated |= n < by_n.begin()->first;
+    return by_n.begin()->second;
+  }
+  if (n >= by_n.rbegin()->first) {
+    extrapolated |= n > by_n.rbegin()->first;
+    return by_n.rbegin()->second;
+  }
+  auto hi = by_n.lower_bound(n);
+  auto lo = std::prev(hi);
+  if (hi->first == n) return hi->second;
+  return mix(lo->second, hi->second, double(n - lo->first) / (hi->first - lo->first));
+}
+
+// Bending load level 3 adds across each rod times the beam compliance: the
+// deflection a local level misses, over L (see the header).
+double missed_deflection(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow,
+                         const HydrodynamicModel& level3, double bending_stiffness) {
   double worst = 0.0;
   for (const RodGeometry& g : rods) {
     RodDrag drag;
@@ -31,8 +57,88 @@ AutoModelChoice choose_auto_model(const std::vector<RodGeometry>& rods, const Ba
     worst = std::max(worst, bending_load * std::pow(length, 3) /
                                 (48.0 * bending_stiffness * g.spheres_per_section) / length);
   }
-  choice.estimated_deflection = worst;
-  if (worst > tolerance) choice.model = find_model_level(3)->name;
+  return worst;
+}
+
+}  // namespace
+
+ExpectedLevelError expected_level_error(const std::vector<LevelErrorRow>& record, int level, double beta, int n) {
+  std::map<double, std::map<int, ErrorTriple>> grid;  // beta -> n -> errors
+  for (const LevelErrorRow& r : record)
+    if (r.level == level) grid[r.beta][r.n] = {r.force_error, r.velocity_error, r.r_error};
+  ExpectedLevelError out;
+  if (grid.empty()) return out;
+  out.known = true;
+  ErrorTriple e;
+  if (beta <= grid.begin()->first || beta >= grid.rbegin()->first) {
+    const auto& at = beta <= grid.begin()->first ? *grid.begin() : *grid.rbegin();
+    out.extrapolated = std::abs(beta - at.first) > 1e-9;
+    e = along_n(at.second, n, out.extrapolated);
+  } else {
+    auto hi = grid.lower_bound(beta);
+    auto lo = std::prev(hi);
+    const ErrorTriple a = along_n(lo->second, n, out.extrapolated);
+    const ErrorTriple b = along_n(hi->second, n, out.extrapolated);
+    e = mix(a, b, (beta - lo->first) / (hi->first - lo->first));
+  }
+  out.force = e.force;
+  out.velocity = e.velocity;
+  out.r = e.r;
+  return out;
+}
+
+AutoModelChoice choose_auto_model(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, double beta,
+                                  const HydrodynamicModel& level3, double bending_stiffness,
+                                  double deflection_tolerance, double error_tolerance,
+                                  const std::vector<LevelErrorRow>& record) {
+  AutoModelChoice choice;
+  choice.flexible = bending_stiffness > 0.0;
+  if (choice.flexible) choice.estimated_deflection = missed_deflection(rods, flow, level3, bending_stiffness);
+  const bool bending_matters = choice.flexible && choice.estimated_deflection > deflection_tolerance;
+  int longest = 1;  // spheres along the longest rod (sections)
+  for (const RodGeometry& g : rods) longest = std::max(longest, g.sections());
+
+  // Expected error of every level: the worst over the rods (the longest rod
+  // for the length dependence).
+  std::vector<ExpectedLevelError> errors;
+  for (int level = 1; level <= 4; ++level) {
+    errors.push_back(expected_level_error(record, level, beta, longest));
+    choice.level_errors.push_back(errors.back().known && find_model_level(level) ? errors.back().total() : -1.0);
+  }
+  auto allowed = [&](int level) { return choice.level_errors[level - 1] >= 0.0 && (!bending_matters || level >= 3); };
+  int chosen = 0;
+  for (int level = 1; level <= 4 && !chosen; ++level)
+    if (allowed(level) && choice.level_errors[level - 1] <= error_tolerance) chosen = level;
+  choice.within_tolerance = chosen != 0;
+  if (!chosen)  // none within the tolerance: the most accurate allowed level
+    for (int level = 1; level <= 4; ++level)
+      if (allowed(level) && (!chosen || choice.level_errors[level - 1] < choice.level_errors[chosen - 1]))
+        chosen = level;
+  if (!chosen) chosen = bending_matters ? 3 : 2;  // no record at all: the previous policy
+  choice.model = find_model_level(chosen)->name;
+  choice.expected_error = std::max(0.0, choice.level_errors[chosen - 1]);
+  choice.extrapolated = errors[chosen - 1].extrapolated;
+
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "beta %.3g, rods of up to %d spheres; expected error from the cross-check record:",
+                beta, longest);
+  std::string s = buf;
+  for (int level = 1; level <= 4; ++level) {
+    const char* sep = level > 1 ? "," : "";
+    if (choice.level_errors[level - 1] < 0.0) std::snprintf(buf, sizeof buf, "%s level %d -", sep, level);
+    else std::snprintf(buf, sizeof buf, "%s level %d %.1f %%", sep, level, 100 * choice.level_errors[level - 1]);
+    s += buf;
+  }
+  if (choice.flexible) {
+    std::snprintf(buf, sizeof buf, "; deflection a local level misses %.3g of L (tolerance %.3g)%s",
+                  choice.estimated_deflection, deflection_tolerance, bending_matters ? ": non-local levels only" : "");
+    s += buf;
+  }
+  std::snprintf(buf, sizeof buf, " -> %s (level %d), expected error %.1f %% (tolerance %.0f %%)%s%s",
+                choice.model.c_str(), chosen, 100 * choice.expected_error, 100 * error_tolerance,
+                choice.within_tolerance ? "" : ": no allowed level within the tolerance, the most accurate one",
+                choice.extrapolated ? "; scene outside the record (beta or n clamped to its range)" : "");
+  choice.summary = s + buf;
   return choice;
 }
 

@@ -1,13 +1,26 @@
 // The `auto` policy of the model keyword: the cheapest level whose error
-// against level 3 stays within a tolerance for this scene.
+// against the resolved reference, as measured in the cross-check (issue 14
+// item 5), stays within a tolerance for this scene.
 //
-// Level 2's rigid-rod friction and drift are fitted to resolved runs
-// (default_coefficients.cpp), so it suffices unless the rod bends: the
-// bending load level 3 adds (the force per
-// sphere on the rod held at its start, minus the rod mean, across the rod)
-// times the compliance L^3 / (48 EI) of a simply supported beam
-// (Euler-Bernoulli, mid-span load) estimates the deflection that level 2
-// misses, as a fraction of the rod length L.
+// Error model: the cross-check record (level_error_record(), written by
+// hsrod_crosscheck_levels --error-record-cpp from the resolved campaign,
+// calibration/data/level_error_record.csv): for each level and each resolved
+// rigid straight rod of n touching spheres at beta, the largest relative
+// error of its totals (friction and held-in-flow load, along and across the
+// axis) and of its force-free velocity. A scene's expected error per level
+// is that record interpolated linearly in n and in beta (clamped outside the
+// recorded ranges, flagged as extrapolated), the worst over its rods.
+//
+// Bending: levels 1-2 are local and miss the bending load that the non-local
+// coupling adds along a rod held across the flow (the force per sphere on
+// the rod held at its start, minus the rod mean, across the rod, from level
+// 3) times the compliance L^3 / (48 EI) of a simply supported beam
+// (Euler-Bernoulli, mid-span load): the deflection a local level misses, as
+// a fraction of the rod length L. A flexible rod whose estimate exceeds the
+// deflection tolerance is given a non-local level (3 or 4) only.
+//
+// What the record does not cover: rods near side walls or pore cylinders
+// (no resolved runs there yet), bent rods, beta and n outside the campaign.
 #pragma once
 
 #include "hydro/hydrodynamic_model.h"
@@ -17,16 +30,49 @@
 
 namespace hsrod {
 
-struct AutoModelChoice {
-  std::string model;                   // registered name (hydro/model_registry.h)
-  double estimated_deflection = 0.0;   // largest deflection level 2 misses, over L [-] (0 for rigid spheres)
-  bool flexible = false;               // false: no bonds, the spheres are rigid (no bending to miss)
+// One row of the cross-check record.
+struct LevelErrorRow {
+  int level;              // 1-4 (hydro/model_registry.h)
+  double beta;            // d / H [-]
+  int n;                  // spheres of the rigid straight rod
+  double force_error;     // largest |model / resolved - 1| of R_par, R_perp, D_par, D_perp [-]
+  double velocity_error;  // largest |model / resolved - 1| of lambda_par, lambda_perp [-]
+  double r_error;         // |model / resolved - 1| of r = lambda_perp / lambda_par [-]
 };
 
-// `bending_stiffness` EI [N m^2] of the rod's bonds, or <= 0 for unbonded
-// (rigid) spheres; `level3` the non-local model at the scene's beta;
-// `tolerance` the accepted deflection error over L [-].
-AutoModelChoice choose_auto_model(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow,
-                                  const HydrodynamicModel& level3, double bending_stiffness, double tolerance);
+// The built-in record and its provenance (auto_model_choice_record.cpp).
+const std::vector<LevelErrorRow>& level_error_record();
+const char* level_error_record_provenance();
+
+struct ExpectedLevelError {
+  bool known = false;         // the record has rows of this level
+  bool extrapolated = false;  // beta or n outside the recorded range (clamped)
+  double force = 0.0, velocity = 0.0, r = 0.0;  // [-]
+  double total() const { return force > velocity ? force : velocity; }
+};
+
+// Level `level`'s expected error for a rigid rod of n spheres at beta.
+ExpectedLevelError expected_level_error(const std::vector<LevelErrorRow>& record, int level, double beta, int n);
+
+struct AutoModelChoice {
+  std::string model;                   // registered name (hydro/model_registry.h)
+  double estimated_deflection = 0.0;   // largest deflection a local level misses, over L [-] (0 for rigid spheres)
+  bool flexible = false;               // false: no bonds, the spheres are rigid (no bending to miss)
+  double expected_error = 0.0;         // the chosen level's expected error (totals, free velocity) [-]
+  bool within_tolerance = false;       // expected_error <= the error tolerance
+  bool extrapolated = false;           // the scene is outside the record for the chosen level
+  std::vector<double> level_errors;    // expected error of levels 1..4 [-] (< 0: not in the record)
+  std::string summary;                 // one line for the log: every level's error, the choice and why
+};
+
+// `rods` the scene's rods, `beta` = d / H; `bending_stiffness` EI [N m^2]
+// of the rod's bonds, or <= 0 for unbonded (rigid) spheres; `level3` the
+// non-local model at the scene's beta (for the bending estimate);
+// `deflection_tolerance` the accepted missed deflection over L [-];
+// `error_tolerance` the accepted relative error of forces and velocities [-].
+AutoModelChoice choose_auto_model(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, double beta,
+                                  const HydrodynamicModel& level3, double bending_stiffness,
+                                  double deflection_tolerance, double error_tolerance,
+                                  const std::vector<LevelErrorRow>& record = level_error_record());
 
 }  // namespace hsrod

@@ -71,7 +71,8 @@ const ModelChoiceReport& RodHydrodynamics::choose_model(double d, const std::vec
   if (spec_.name == "auto") {
     const auto level3 = find_model_level(3)->make(parameters, table, spec_.options);
     report.automatic = true;
-    report.automatic_choice = choose_auto_model(rods, *flow_, *level3, bending_stiffness, spec_.tolerance);
+    report.automatic_choice = choose_auto_model(rods, *flow_, d / gap, *level3, bending_stiffness, spec_.tolerance,
+                                                spec_.error_tolerance);
     report.name = report.automatic_choice.model;
   }
   model_ = make_hydrodynamic_model(report.name, parameters, table, spec_.options.window);

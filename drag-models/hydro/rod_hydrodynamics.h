@@ -47,6 +47,7 @@ struct SceneSpec {
 struct ModelSpec {
   std::string name = "auto";         // a registered name (hydro/model_registry.h) or "auto"
   double tolerance = 0.01;           // auto: accepted deflection error over L [-]
+  double error_tolerance = 0.10;     // auto: accepted error of forces and velocities against resolved runs [-]
   std::string coefficients_file;     // confinement table; "" = built-in defaults
   ModelOptions options;              // per-model settings (level-4 window)
   int spheres_per_section = 1;       // spheres per rod cross-section

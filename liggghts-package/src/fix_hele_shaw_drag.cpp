@@ -223,15 +223,10 @@ void FixHeleShawDrag::choose_model() {
     const hsrod::ModelChoiceReport &choice = hydro_->choose_model(d, rods, bending_stiffness);
     char msg[512];
     if (choice.automatic) {
-      if (choice.automatic_choice.flexible)
-        std::snprintf(msg, sizeof(msg),
-                      "fix hele_shaw/drag: auto: estimated deflection missed by a local model %.3g of L "
-                      "(tolerance %.3g) -> %s\n", choice.automatic_choice.estimated_deflection,
-                      hydro_->model_spec().tolerance, choice.name.c_str());
-      else
-        std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: auto: no fix rod/bonds (rigid spheres) -> %s\n",
-                      choice.name.c_str());
-      report(msg);
+      // every level's expected error (cross-check record), the bending estimate, the choice
+      const std::string line = "fix hele_shaw/drag: auto: " + choice.automatic_choice.summary +
+                               (choice.automatic_choice.flexible ? "" : " (no fix rod/bonds: rigid spheres)") + "\n";
+      report(line.c_str());
     }
     std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: model %s (level %d), beta = %g, coefficients: %s\n",
                   choice.name.c_str(), choice.level, choice.beta, choice.coefficients_source.c_str());

@@ -3,12 +3,15 @@
 // policy (hydro/auto_model_choice.h) on rods whose answer is known.
 #include "hydro/rod_hydrodynamics.h"
 
+#include "hydro/auto_model_choice.h"
+
 #include "common/math_constants.h"
 #include "rod_fixtures.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace hsrod;
 
@@ -76,18 +79,34 @@ TEST(RodHydrodynamics, ExplicitDragLimitOfAnIsolatedSphereIsTwoMassesOverFrictio
               1e-12 * std::min(translation, rotation));
 }
 
-// auto: no bonds -> level 2 (nothing bends); a rod along a uniform stream has
-// no load across itself (symmetry) -> level 2 whatever its stiffness; a rod
-// across the flow is loaded into a C (level 3's shielding of the middle):
-// level 3 for a soft rod, level 2 for a stiff one, and the estimate scales as 1/EI.
-TEST(RodHydrodynamics, AutoChoosesLevelThreeOnlyWhenTheMissedBendingExceedsTheTolerance) {
+// auto (the built-in cross-check record, beta = 0.15): a lone sphere is level
+// 1 (every level is the confined sphere); rigid 10-sphere rods (no bonds)
+// level 2, the cheapest level within 10 % of the resolved runs (level 1
+// misses the chain's shielding); a rod along a uniform stream has no load
+// across itself (symmetry) -> level 2 whatever its stiffness; a rod across
+// the flow is loaded into a C (the non-local coupling's shielding of the
+// middle): a non-local level for a soft rod, the more accurate of levels 3
+// and 4 by the record, level 2 for a stiff one; the estimate scales as 1/EI.
+TEST(RodHydrodynamics, AutoChoosesByTheRecordedErrorAndTheMissedBending) {
   const double soft = 1e-19, stiff = 1e-16;  // EI [N m^2]: 3 um bonds of E ~ 2.5e4 Pa and ~2.5e7 Pa
+  const double beta = kD / kGap;
+  {
+    RodHydrodynamics hydro(straight_channel(), model_named("auto"));
+    const auto& report = hydro.choose_model(kD, {centred_rod(hydro, 1, 0.0)}, 0.0);
+    EXPECT_EQ(report.level, 1);
+    EXPECT_LT(report.automatic_choice.expected_error, 0.02);
+  }
   {
     RodHydrodynamics hydro(straight_channel(), model_named("auto"));
     const auto& report = hydro.choose_model(kD, {centred_rod(hydro, 10, 0.5 * kPi)}, 0.0);
     EXPECT_TRUE(report.automatic);
     EXPECT_FALSE(report.automatic_choice.flexible);
     EXPECT_EQ(report.name, "local");
+    EXPECT_TRUE(report.automatic_choice.within_tolerance);
+    EXPECT_NEAR(report.automatic_choice.expected_error,
+                expected_level_error(level_error_record(), 2, beta, 10).total(), 1e-12);
+    EXPECT_GT(report.automatic_choice.level_errors[0], 0.10) << "level 1 misses the shielding of a 10-sphere rod";
+    std::printf("%s\n", report.automatic_choice.summary.c_str());
   }
   {
     RodHydrodynamics hydro(straight_channel(), model_named("auto"));
@@ -101,8 +120,9 @@ TEST(RodHydrodynamics, AutoChoosesLevelThreeOnlyWhenTheMissedBendingExceedsTheTo
     const auto& report = hydro.choose_model(kD, {centred_rod(hydro, 10, 0.5 * kPi)}, soft);
     soft_estimate = report.automatic_choice.estimated_deflection;
     EXPECT_GT(soft_estimate, 0.01);
-    EXPECT_EQ(report.name, "nonlocal");
-    EXPECT_EQ(report.level, 3);
+    const auto& e = report.automatic_choice.level_errors;
+    EXPECT_EQ(report.level, e[2] <= e[3] ? 3 : 4);
+    std::printf("%s\n", report.automatic_choice.summary.c_str());
   }
   {
     RodHydrodynamics hydro(straight_channel(), model_named("auto"));

@@ -50,9 +50,14 @@ const ModelEntry* find_model_level(int level) {
   return nullptr;
 }
 
-std::string valid_model_names(const std::string& extra) {
+std::vector<std::string> hydrodynamic_model_names() {
   std::vector<std::string> names;
   for (const ModelEntry& m : registered_models()) names.push_back(m.name);
+  return names;
+}
+
+std::string valid_model_names(const std::string& extra) {
+  std::vector<std::string> names = hydrodynamic_model_names();
   if (!extra.empty()) names.push_back(extra);
   std::string out;
   for (std::size_t k = 0; k < names.size(); ++k) {
@@ -60,12 +65,6 @@ std::string valid_model_names(const std::string& extra) {
     out += names[k];
   }
   return out;
-}
-
-std::vector<std::string> hydrodynamic_model_names() {
-  std::vector<std::string> names;
-  for (const ModelEntry& m : registered_models()) names.push_back(m.name);
-  return names;
 }
 
 std::unique_ptr<HydrodynamicModel> make_hydrodynamic_model(const std::string& name,

@@ -10,7 +10,11 @@ flux); the flow through the held rod is blocked (less than 0.9 of the
 background at its sphere centres); the pressure rises upstream of the rod and
 falls downstream of it; nothing moves inside walls.
 
-usage: check_field_twoway.py HSROD_EXECUTABLE
+With --mpi MPIEXEC the run is repeated on 2 ranks with the rod split
+between them (processors 1 2 1): the files must be identical to the serial
+ones (the rods' loads are gathered from all ranks).
+
+usage: check_field_twoway.py HSROD_EXECUTABLE [--mpi MPIEXEC]
 """
 import os
 import shutil
@@ -71,6 +75,20 @@ def main():
         if run.returncode != 0:
             print(run.stdout[-3000:], run.stderr[-3000:])
             raise SystemExit("hsrod failed")
+        if "--mpi" in sys.argv:
+            launcher = sys.argv[sys.argv.index("--mpi") + 1]
+            parallel = os.path.join(work, "mpi")
+            os.mkdir(parallel)
+            shutil.copy(os.path.join(HERE, "in.field_twoway"), parallel)
+            mpi = subprocess.run([launcher, "--allow-run-as-root", "--oversubscribe", "-np", "2", hsrod, "-in",
+                                  "in.field_twoway", "-log", "none", "-var", "py", "2"], cwd=parallel,
+                                 capture_output=True, text=True, timeout=300)
+            if mpi.returncode != 0 or "1 by 2 by 1 MPI processor grid" not in mpi.stdout:
+                print(mpi.stdout[-3000:], mpi.stderr[-3000:])
+                raise SystemExit("hsrod on 2 ranks failed")
+            for name in ("rod_flow_2.vti", "background_flow_2.vti"):
+                same = open(os.path.join(work, name), "rb").read() == open(os.path.join(parallel, name), "rb").read()
+                check(same, "%s on 2 ranks (rod split between them) identical to the serial file" % name)
         rod = read(os.path.join(work, "rod_flow_2.vti"))
         bg = read(os.path.join(work, "background_flow_2.vti"))
         check(rod["u"].shape == (201, 601), "images 601 x 201 points (1 um)")

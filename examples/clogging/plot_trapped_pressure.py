@@ -9,6 +9,8 @@ background, background_trapped_*.vti) with the disturbed flow's
 streamlines; in the title the channel's pressure drop with and without the
 rod's load (compute hele_shaw/pressure_drop, from the TRAPPED_PRESSURE
 line of the run's screen output).
+A third panel shows the disturbed flow's speed |u|/U with streamlines
+(Fig. 11c: the velocity field around a trapped rod).
 What it is not: a resolved 3-D pressure; the window flow is gap-averaged
 and its pressure counts the rod's obstruction forces only
 (doc/fix_hele_shaw_field.txt, Restrictions).
@@ -64,7 +66,7 @@ print(f"rod middle at x = {middle[0] * 1e6:.1f} um: pressure disturbance jump ac
       f"disturbance range {disturbance[fluid == 1].min():.1f} .. {disturbance[fluid == 1].max():.1f} Pa")
 
 um = 1e6
-fig, axes = plt.subplots(1, 2, figsize=(13, 5))
+fig, axes = plt.subplots(1, 3, figsize=(19, 5))
 keep = (x > 180e-6) & (x < 420e-6)
 xs, ys = x[keep] * um, y * um
 wall = fluid[:, keep] == 0
@@ -86,10 +88,25 @@ for ax, values, cmap, limits, label in panels:
     ax.set_aspect("equal")
     ax.set_xlabel("x [µm]")
     ax.set_ylabel("y [µm]")
+U_MEAN = 0.0295  # mean inflow velocity of the scene [m/s] (Re = 2)
+speed = np.ma.masked_where(wall, np.hypot(ux[:, keep], uy[:, keep]) / U_MEAN)
+mesh = axes[2].pcolormesh(xs, ys, speed, shading="gouraud", cmap="viridis")
+fig.colorbar(mesh, ax=axes[2], label="gap-averaged speed |u| / U, trapped rod at level 4", shrink=0.85)
+axes[2].streamplot(xs, ys, np.where(wall, 0.0, ux[:, keep]), np.where(wall, 0.0, uy[:, keep]), color="w",
+                   density=1.4, linewidth=0.5, arrowsize=0.6)
+for cx, cy in ((300.0, 0.0), (300.0, 200.0)):
+    axes[2].add_patch(Circle((cx, cy), 85.0, facecolor="0.6", edgecolor="k"))
+for px, py in rod:
+    axes[2].add_patch(Circle((px * um, py * um), 1.5, facecolor="gold", edgecolor="k", lw=0.5))
+axes[2].set_xlim(180, 420)
+axes[2].set_ylim(0, 200)
+axes[2].set_aspect("equal")
+axes[2].set_xlabel("x [µm]")
 axes[1].streamplot(xs, ys, np.where(wall, 0.0, ux[:, keep]), np.where(wall, 0.0, uy[:, keep]), color="0.2",
                    density=1.4, linewidth=0.5, arrowsize=0.6)
-fig.suptitle("Rod trapped at the pore (E = 15 MPa, L_rod = 2 d_pore); channel pressure drop "
-             f"{values_line['background_Pa']:.0f} Pa without the rod, +{values_line['rise_level4_Pa']:.0f} Pa with it "
+case = values_line.get("ratio", 2.0), values_line.get("alpha", 0.0), values_line.get("E", 15e6) / 1e6
+fig.suptitle("Rod at the pore (E = %g MPa, L_rod = %g d_pore, alpha = %g deg); channel pressure drop " % (case[2], case[0], case[1])
+             + f"{values_line['background_Pa']:.0f} Pa without the rod, +{values_line['rise_level4_Pa']:.0f} Pa with it "
              f"at level 4 (+{values_line['rise_level2_Pa']:.0f} Pa at level 2); "
              f"window pressure jump across the rod {jump:.0f} Pa", fontsize=9)
 fig.tight_layout()

@@ -8,8 +8,9 @@
 #           E 15 kPa - 15 MPa (13 values, 4 per decade) x L_rod/d_pore 1 - 5 (step 0.5)
 #   fig11a: aspect ratio 10, E = 15 MPa, alpha 0 - 90 deg (step 7.5) x L_rod/d_pore 1 - 5
 #   fig10b: aspect ratio 5 (2x2 spheres per section, d_rod = 6 um, H = 40 um),
-#           E 15 kPa - 15 MPa (4 values) x L_rod/d_pore 1 - 5 (step 1)   [coarse: see README]
-# Usage: bash run_maps.sh [fig10a fig11a fig10b]   (default: all three)
+#           E 15 kPa - 15 MPa (7 values, 2 per decade) x L_rod/d_pore 1 - 5 (step 1)   [coarse: see README]
+#   fig11b: aspect ratio 5, E = 15 MPa, alpha 0 - 45 deg (step 15) x L_rod/d_pore 2 - 4 (step 1)   [coarse]
+# Usage: bash run_maps.sh [fig10a fig11a fig10b fig11b]   (default: all four)
 # Environment: WORKERS (default 2; the farm runs WORKERS + 1 MPI ranks),
 # MODEL (drag model, default local = level 2), BUILD (default ../../build),
 # CASE_TIMEOUT (seconds of wall time per case, default 0 = none),
@@ -58,15 +59,17 @@ plot() {  # plot <name> <x> <title> [--logx]
     --ylabel "L_rod / d_pore" --title "$3" "${@:4}" -o "$1.png"
 }
 maps=("$@")
-[ ${#maps[@]} -eq 0 ] && maps=(fig10a fig11a fig10b)
+[ ${#maps[@]} -eq 0 ] && maps=(fig10a fig11a fig10b fig11b)
 for map in "${maps[@]}"; do
   case $map in
     fig10a) run fig10a --var section 1 --var alpha 0 --var E "$E13" --var ratio 1:5:0.5
             plot fig10a E "Fig. 10a: aspect ratio 10, alpha = 0 (hsrod, $model)" --logx --xlabel "E [Pa]" ;;
     fig11a) run fig11a --var section 1 --var E 15e6 --var alpha 0:90:7.5 --var ratio 1:5:0.5
             plot fig11a alpha "Fig. 11a: aspect ratio 10, E = 15 MPa (hsrod, $model)" --xlabel "initial angle alpha [deg]" ;;
-    fig10b) run fig10b --var section 2 --var alpha 0 --var E 15e3,150e3,1.5e6,15e6 --var ratio 1:5:1
+    fig10b) run fig10b --var section 2 --var alpha 0 --var E 15e3,47.43e3,150e3,474.3e3,1.5e6,4.743e6,15e6 --var ratio 1:5:1
             plot fig10b E "Fig. 10b: aspect ratio 5, alpha = 0 (hsrod, $model)" --logx --xlabel "E [Pa]" ;;
-    *) echo "run_maps.sh: unknown map '$map' (fig10a, fig11a, fig10b)" >&2; exit 1 ;;
+    fig11b) run fig11b --var section 2 --var E 15e6 --var alpha 0:45:15 --var ratio 2:4:1
+            plot fig11b alpha "Fig. 11b: aspect ratio 5, E = 15 MPa (hsrod, $model)" --xlabel "initial angle alpha [deg]" ;;
+    *) echo "run_maps.sh: unknown map '$map' (fig10a, fig11a, fig10b, fig11b)" >&2; exit 1 ;;
   esac
 done

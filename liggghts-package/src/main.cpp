@@ -5,16 +5,15 @@
 
 #include "input.h"
 #include "lammps.h"
-#include "signal_handling.h"
+#include "update.h"
 
+#include "run_signals.h"
 #include "screen/screen_mode.h"
 #include "style_registration.h"
 
 #include <mpi.h>
 
-#include <csignal>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <string>
 #include <typeinfo>
@@ -22,12 +21,9 @@
 using namespace LAMMPS_NS;
 
 int main(int argc, char **argv) {
-  // Ctrl-C / SIGTERM end the run cleanly at the next step, as in liggghts.
-  struct sigaction int_action;
-  std::memset(&int_action, 0, sizeof(int_action));
-  int_action.sa_handler = SignalHandler::int_handler;
-  sigaction(SIGINT, &int_action, nullptr);
-  sigaction(SIGTERM, &int_action, nullptr);
+  // Ctrl-C / SIGTERM end the run cleanly at the next step, as in liggghts,
+  // but without a restart file in the working directory (run_signals.h).
+  hsrod::install_run_signal_handlers();
 
   // Line-buffered screen output: an ERROR printed just before MPI_Abort
   // must reach a pipe or a log collector, not die in a buffer.
@@ -48,6 +44,16 @@ int main(int argc, char **argv) {
     } else {
       lammps->input->file();
       if (!screen_scene.empty()) hsrod::screen::report(lammps);
+    }
+    // A run cut short by a signal is not a success: a sweep or a script
+    // must see it (output files are complete up to the step it stopped at).
+    if (const int signum = hsrod::quit_signal_received()) {
+      int me = 0;
+      MPI_Comm_rank(MPI_COMM_WORLD, &me);
+      if (me == 0)
+        std::fprintf(stdout, "ERROR: hsrod: stopped by signal %d (%s) at step %lld; the input script was not finished\n",
+                     signum, signum == 2 ? "SIGINT" : "SIGTERM", static_cast<long long>(lammps->update->ntimestep));
+      rc = 128 + signum;
     }
     delete lammps;
   } catch (const std::exception &e) {

@@ -11,6 +11,7 @@
 // through a friend function. This is the only file that does so.
 
 #include "style_registration.h"
+#include "liggghts_workarounds.h"
 
 #include "input.h"
 #include "lammps.h"
@@ -79,6 +80,9 @@ void run_command(LAMMPS *lmp, int narg, char **arg) {
 namespace hsrod {
 
 void register_styles(LAMMPS_NS::LAMMPS *lmp) {
+  // Every hsrod instance (hsrod, hsrod-sweep, the tests) also gets the
+  // library workarounds (an ERROR line printed twice with garbage bytes).
+  avoid_dangling_error_tip(lmp);
   FixMap &fixes = *(lmp->modify->*get(FixMapTag{}));
   ComputeMap &computes = *(lmp->modify->*get(ComputeMapTag{}));
   CommandMap &commands = *(lmp->input->*get(CommandMapTag{}));

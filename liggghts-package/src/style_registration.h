@@ -9,7 +9,7 @@ class Fix;
 namespace hsrod {
 // Inserts every style of style_hsrod.h into the LAMMPS instance's fix,
 // compute and command maps. Call after `new LAMMPS(...)`, before reading
-// the input.
+// the input. Also applies liggghts_workarounds.h.
 void register_styles(LAMMPS_NS::LAMMPS *lmp);
 
 // Registers (or replaces: LIGGGHTS' own styles too) one fix style; used by

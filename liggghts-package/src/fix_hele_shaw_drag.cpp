@@ -350,11 +350,20 @@ int FixHeleShawDrag::unpack_exchange(int nlocal, double *buf) {
   return N_LOAD_COLUMNS;
 }
 
-// Global restart data: [count, the facade's model state (count numbers)].
+// Global restart data: [kRestartFormat, simulated time, count, the facade's
+// model state (count numbers)]. LIGGGHTS 3.8's restart files hold the step
+// but not the simulated time (thermo's `time` restarted at 0 after
+// read_restart, issue 10): this fix carries it. Files of the first format,
+// [count, state], start with a count >= 0 and are still read.
+namespace {
+constexpr double kRestartFormat = -2.0;
+}
+
 void FixHeleShawDrag::write_restart(FILE *fp) {
   if (comm->me != 0) return;
   std::vector<double> data = hydro_->save_state();
-  data.insert(data.begin(), static_cast<double>(data.size()));
+  const double time = update->atime + (update->ntimestep - update->atimestep) * update->dt;  // [s]
+  data.insert(data.begin(), {kRestartFormat, time, static_cast<double>(data.size())});
   const int size = static_cast<int>(data.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(data.data(), sizeof(double), data.size(), fp);
@@ -362,6 +371,13 @@ void FixHeleShawDrag::write_restart(FILE *fp) {
 
 void FixHeleShawDrag::restart(char *buf) {
   const double *list = reinterpret_cast<const double *>(buf);
+  if (list[0] == kRestartFormat) {
+    // The restored step (read_restart) is the time origin from here on;
+    // Integrate::init keeps atime and moves atimestep to the step again.
+    update->atime = list[1];
+    update->atimestep = update->ntimestep;
+    list += 2;
+  }
   const std::size_t n = static_cast<std::size_t>(list[0]);
   try {
     hydro_->restore_state(std::vector<double>(list + 1, list + 1 + n));

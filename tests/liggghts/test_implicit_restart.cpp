@@ -7,6 +7,8 @@
 // must not change the step.
 #include "liggghts_session.h"
 
+#include "variable.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -78,4 +80,26 @@ TEST(ImplicitRestart, LevelFourRunContinuesIdenticallyWithItsWindowsRestored) {
   const double worst = restart_difference("twoway window_cells 2");
   std::printf("level 4 restart: largest position difference %.3g m\n", worst);
   EXPECT_LT(worst, 1e-12 * kD);
+}
+
+// Issue 10: `time` restarted at 0 after read_restart (LIGGGHTS 3.8 stores
+// the step, not the simulated time). After 40 steps of 4 us, restarted, and
+// 10 more steps, the run's time is 50 x 4 us, as in the unbroken run.
+TEST(ImplicitRestart, SimulatedTimeContinuesAfterReadRestart) {
+  const auto dir = std::filesystem::temp_directory_path() / "hsrod_implicit_restart_test";
+  std::filesystem::create_directories(dir);
+  const std::string file = (dir / "time.restart").string();
+  {
+    LiggghtsSession first;
+    start_pore_run(first, "local");
+    first.command("write_restart " + file);
+  }
+  LiggghtsSession second;
+  second.commands({"atom_style hybrid granular molecular", "atom_modify map array sort 0 0",
+                   "communicate single cutoff 1e-5 vel yes", "read_restart " + file});
+  define_fixes(second, "local");
+  second.commands({"timestep 4e-6", "variable t equal time", "run 10"});
+  char name[] = "v_t";
+  const double time = second.lammps()->input->variable->compute_equal(name);
+  EXPECT_NEAR(time, 50 * 4e-6, 1e-12 * 4e-6) << "simulated time after the restarted run [s]";
 }

@@ -15,6 +15,7 @@
 
 #include "fix_rod_bonds.h"
 #include "implicit_partners.h"
+#include "neighbor_choice.h"
 #include "rod_assembly.h"
 #include "rod_gather.h"
 
@@ -152,6 +153,7 @@ void FixHeleShawDrag::init() {
   // Whether a fix rod/implicit applies this drag in its step (decided here, every run).
   applied_by_integrator_ = implicit_integrator_of(modify, error, id) != nullptr;
   if (!hydro_->has_model()) choose_model();
+  hsrod::choose_neighbor_style(lmp, "fix hele_shaw/drag");
 
   if (!placement_check_) return;
   // Every sphere must start in the fluid (inside the planform and the gap).

@@ -14,6 +14,7 @@
 #include "force.h"
 #include "group.h"
 #include "implicit_partners.h"
+#include "neighbor_choice.h"
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
@@ -167,6 +168,7 @@ void FixRodBonds::init() {
   if (bond_set_.damping_ratio > 0.0 && !comm->ghost_velocity)
     error->all(FLERR, "fix rod/bonds: damping > 0 needs ghost velocities: add 'communicate single vel yes'");
   compute_stability_limits();
+  hsrod::choose_neighbor_style(lmp, "fix rod/bonds");
 }
 
 /* ---------------------------------------------------------------------- */

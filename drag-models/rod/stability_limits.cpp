@@ -64,19 +64,21 @@ RodStabilityLimits compute_stability_limits(const RodLayout& layout, const Spher
 }
 
 std::string RodStabilityLimits::table(double timestep) const {
-  char buf[1024];
   auto ratio = [timestep](double t) { return t > 0.0 ? timestep / t : 0.0; };
-  std::snprintf(buf, sizeof(buf),
-                "  time scale                         value [s]     dt/value\n"
-                "  Rayleigh (Hertz contact)           %-12.4g  %.3g\n"
-                "  axial bond sqrt(m/k_n)             %-12.4g  %.3g\n"
-                "  bending bond sqrt(I_s/k_b)         %-12.4g  %.3g\n"
-                "  Stokes relaxation m/(3 pi mu d)    %-12.4g  %.3g\n"
-                "  explicit bond limit 2/omega_max    %-12.4g  %.3g\n",
-                rayleigh_time, ratio(rayleigh_time), axial_bond_time, ratio(axial_bond_time),
-                bending_bond_time, ratio(bending_bond_time), stokes_relaxation_time,
-                ratio(stokes_relaxation_time), explicit_bond_limit, ratio(explicit_bond_limit));
-  return buf;
+  auto row = [&ratio](const char* name, double t) {
+    char line[128];
+    std::snprintf(line, sizeof(line), "  %-35s%-12.4g  %.3g\n", name, t, ratio(t));
+    return std::string(line);
+  };
+  std::string out = "  time scale                         value [s]     dt/value\n";
+  out += row("Rayleigh (Hertz contact)", rayleigh_time);
+  out += row("axial bond sqrt(m/k_n)", axial_bond_time);
+  out += row("bending bond sqrt(I_s/k_b)", bending_bond_time);
+  // Without a viscosity there is no Stokes relaxation time: no row (issue 10:
+  // a "Stokes relaxation 0" row read as a zero time scale).
+  if (stokes_relaxation_time > 0.0) out += row("Stokes relaxation m/(3 pi mu d)", stokes_relaxation_time);
+  out += row("explicit bond limit 2/omega_max", explicit_bond_limit);
+  return out;
 }
 
 }  // namespace hsrod

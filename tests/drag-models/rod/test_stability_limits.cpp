@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 using namespace hsrod;
 
@@ -41,4 +43,24 @@ TEST(StabilityLimits, TwoSphereAxialModeIsExact) {
   const double axial_omega = std::sqrt(2.0) / lim.axial_bond_time;
   EXPECT_GE(lim.highest_bond_frequency, axial_omega * (1 - 1e-6));
   EXPECT_LE(lim.explicit_bond_limit, std::sqrt(2.0) * lim.axial_bond_time * (1 + 1e-6));
+}
+
+// Issue 10: fix rod/bonds (no viscosity) printed a "Stokes relaxation 0"
+// row. The row appears only with a viscosity, with the value and dt/value.
+TEST(StabilityLimits, TableShowsTheStokesRowOnlyWithAViscosity) {
+  RodSpec spec;
+  spec.number_of_sections = 10;
+  spec.sphere_diameter = 3e-6;
+  const BeamBondMaterial bond{15e6, 0.3, 3e-6, 0.0};
+  const SphereMaterial sphere{3e-6, 1170.0, 15e6, 0.3};
+  const std::string without = compute_stability_limits(make_rod_layout(spec), sphere, bond, 0.0).table(1e-8);
+  EXPECT_EQ(without.find("Stokes"), std::string::npos) << without;
+  EXPECT_NE(without.find("explicit bond limit 2/omega_max"), std::string::npos) << without;
+  const auto with_fluid = compute_stability_limits(make_rod_layout(spec), sphere, bond, 1e-3);
+  const std::string table = with_fluid.table(1e-8);
+  char row[128];
+  std::snprintf(row, sizeof(row), "Stokes relaxation m/(3 pi mu d)    %-12.4g  %.3g", with_fluid.stokes_relaxation_time,
+                1e-8 / with_fluid.stokes_relaxation_time);
+  EXPECT_NE(table.find(row), std::string::npos) << table;
+  EXPECT_NEAR(with_fluid.stokes_relaxation_time, 0.6e-6, 0.05e-6);
 }

@@ -80,6 +80,9 @@ class RodHydrodynamics {
   double gap_bottom() const { return gap_bottom_; }  // z of the lower gap wall [m]
   int spheres_per_section() const { return spec_.spheres_per_section; }
   const ModelSpec& model_spec() const { return spec_; }
+  // Replaces the requested model name before choose_model() (the caller's
+  // resource bounds: `auto` when even its level-3 estimate would not fit).
+  void override_model_name(const std::string& name) { spec_.name = name; }
   // True when x [m] lies in the fluid: inside the planform and the gap.
   bool in_fluid(const Eigen::Vector3d& x) const;
   // A rod of this scene: sphere centres (ordered section by section) and diameter.

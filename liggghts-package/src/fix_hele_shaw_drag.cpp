@@ -1,6 +1,7 @@
 /* ----------------------------------------------------------------------
    hsrod - fix hele_shaw/drag (see fix_hele_shaw_drag.h; keywords in
-   fix_hele_shaw_drag_keywords.cpp)
+   fix_hele_shaw_drag_keywords.cpp, checks of the scene and the spheres'
+   placement in fix_hele_shaw_drag_checks.cpp)
 ------------------------------------------------------------------------- */
 
 #include "fix_hele_shaw_drag.h"
@@ -32,10 +33,6 @@
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
-
-namespace {
-constexpr double kWallOverlapAllowed = 0.1;  // gap-wall overlap accepted at init [sphere radii]
-}
 
 FixHeleShawDrag::FixHeleShawDrag(LAMMPS *instance, int narg, char **arg)
     : Fix(instance, narg, arg),
@@ -107,40 +104,6 @@ FixHeleShawDrag::~FixHeleShawDrag() {
 
 const hsrod::BackgroundFlow &FixHeleShawDrag::flow() const { return hydro_->flow(); }
 
-// beta = d / H against the coefficient table before the background flow is
-// solved (issue 10: at beta 0.95 the grid solve ran before the beta check).
-// Spheres created later are checked in init() by the facade.
-void FixHeleShawDrag::check_confinement_before_solve(const hsrod::SceneSpec &scene, const hsrod::ModelSpec &model) {
-  double dmin = 1e300;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) dmin = std::min(dmin, 2.0 * atom->radius[i]);
-  double d = 1e300;
-  MPI_Allreduce(&dmin, &d, 1, MPI_DOUBLE, MPI_MIN, world);
-  if (d > 1e299) return;  // no spheres yet
-  const double beta = d / scene.gap_height;
-  char msg[512];
-  if (!(beta < 1.0)) {
-    std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: sphere diameter %g m >= gap height %g m (beta = d/H must be < 1)",
-                  d, scene.gap_height);
-    error->all(FLERR, msg);
-  }
-  try {
-    const hsrod::ConfinementTable table = model.coefficients_file.empty()
-                                              ? hsrod::ConfinementTable::default_table()
-                                              : hsrod::ConfinementTable::read(model.coefficients_file);
-    if (!(beta >= table.rows().front().beta && beta <= table.max_beta())) {
-      std::snprintf(msg, sizeof(msg),
-                    "fix hele_shaw/drag: confinement beta = d/H = %g outside the coefficient table's range [%g, %g] "
-                    "(d = %g m, H = %g m); checked before the background flow is solved",
-                    beta, table.rows().front().beta, table.max_beta(), d, scene.gap_height);
-      error->all(FLERR, msg);
-    }
-  } catch (const std::exception &e) {
-    std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s", e.what());
-    error->all(FLERR, msg);
-  }
-}
-
 void FixHeleShawDrag::report(const char *line) {
   if (comm->me != 0) return;
   if (screen) fputs(line, screen);
@@ -155,43 +118,7 @@ void FixHeleShawDrag::init() {
   if (!hydro_->has_model()) choose_model();
   hsrod::choose_neighbor_style(lmp, "fix hele_shaw/drag");
 
-  if (!placement_check_) return;
-  // Every sphere must start in the fluid (inside the planform and the gap).
-  int outside = 0;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    const double *x = atom->x[i];
-    if (!hydro_->in_fluid(Eigen::Vector3d(x[0], x[1], x[2]))) outside++;
-  }
-  int total_outside = 0;
-  MPI_Allreduce(&outside, &total_outside, 1, MPI_INT, MPI_SUM, world);
-  if (total_outside > 0) {
-    char msg[256];
-    std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %d sphere centre(s) outside the channel planform or gap",
-                  total_outside);
-    error->all(FLERR, msg);
-  }
-  // Every sphere must fit between the gap walls (issue 10: a rod centred in
-  // the lower wall z = 0 was accepted and pushed out). Overlaps up to 0.1 r
-  // pass: a rod touching a wall at the end of a run (Hertz overlap, bounded
-  // per step by fix rod/implicit's guard at 0.1 r) may be run on.
-  const double bottom = hydro_->gap_bottom(), top = bottom + hydro_->geometry().gap_height();
-  int overlapping = 0;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    const double z = atom->x[i][2], r = atom->radius[i];
-    if (z - r < bottom - kWallOverlapAllowed * r || z + r > top + kWallOverlapAllowed * r) overlapping++;
-  }
-  int total_overlapping = 0;
-  MPI_Allreduce(&overlapping, &total_overlapping, 1, MPI_INT, MPI_SUM, world);
-  if (total_overlapping > 0) {
-    char msg[256];
-    std::snprintf(msg, sizeof(msg),
-                  "fix hele_shaw/drag: %d sphere(s) overlap the gap walls by more than %g r: centres must lie in "
-                  "[z_bottom + r, z_top - r] = [%g + r, %g - r] m ('placement_check no' to run anyway)",
-                  total_overlapping, kWallOverlapAllowed, bottom, top);
-    error->all(FLERR, msg);
-  }
+  if (placement_check_) check_placement();
 }
 
 // One sphere diameter per group (beta = d / H); the facade builds the model,
@@ -212,14 +139,20 @@ void FixHeleShawDrag::choose_model() {
 
   std::vector<hsrod::RodGeometry> rods;
   double bending_stiffness = 0.0;  // EI [N m^2]; 0: no bonds, rigid spheres
-  if (hydro_->model_spec().name == "auto") {
-    const FixRodBonds *bonds = nullptr;
-    for (int f = 0; f < modify->nfix; f++)
-      if (strcmp(modify->fix[f]->style, "rod/bonds") == 0) bonds = dynamic_cast<FixRodBonds *>(modify->fix[f]);
-    if (bonds) bending_stiffness = bonds->bond_set().bending_stiffness(d);
+  const std::string requested = hydro_->model_spec().name;
+  bool level3_too_large = false;  // the level-3 model (auto: its estimate) would not fit memory_limit
+  if (requested == "auto" || requested == "nonlocal") {
     RodGather gather(lmp);
     gather.gather(groupbit, nullptr);
-    for (const auto &rod : gather.rods) rods.push_back(rod_geometry(*hydro_, rod.first, rod.second, d));
+    level3_too_large = !dense_model_fits(gather);
+    if (level3_too_large) hydro_->override_model_name("local");  // auto: not even estimated
+    if (requested == "auto" && !level3_too_large) {
+      const FixRodBonds *bonds = nullptr;
+      for (int f = 0; f < modify->nfix; f++)
+        if (strcmp(modify->fix[f]->style, "rod/bonds") == 0) bonds = dynamic_cast<FixRodBonds *>(modify->fix[f]);
+      if (bonds) bending_stiffness = bonds->bond_set().bending_stiffness(d);
+      for (const auto &rod : gather.rods) rods.push_back(rod_geometry(*hydro_, rod.first, rod.second, d));
+    }
   }
   try {
     const hsrod::ModelChoiceReport &choice = hydro_->choose_model(d, rods, bending_stiffness);

@@ -69,7 +69,12 @@ class FixHeleShawDrag : public Fix {
   enum LoadColumn { TOTAL_X = 0, DRIVING_X = 3, FRICTION_X = 6, TORQUE_X = 9, N_LOAD_COLUMNS = 12 };
 
  private:
+  // fix_hele_shaw_drag_checks.cpp: the scene and the spheres checked before any work.
   void check_confinement_before_solve(const hsrod::SceneSpec &scene, const hsrod::ModelSpec &model);
+  void check_placement();
+  bool dense_model_fits(const class RodGather &gather);
+  bool midplane_warned_ = false;  // rods off the gap mid-plane are warned about once
+  double dense_memory_limit_ = 2e9;  // memory_limit: largest dense level-3 model [bytes]
   std::unique_ptr<hsrod::RodHydrodynamics> hydro_;
   bool applied_by_integrator_;
   double **hydro_force_;          // per atom, last load: total, driving, friction [N], torque [N m] (LoadColumn)

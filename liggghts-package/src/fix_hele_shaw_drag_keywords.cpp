@@ -19,6 +19,8 @@
      section S           spheres per rod cross-section (default 1)
      inertia yes|no      gap-averaged inertia in the background flow (default no)
      timestep_check yes|no  explicit mode: refuse dt above the drag limit (default yes)
+     placement_check yes|no at each run's start refuse spheres outside the fluid (default yes)
+     memory_limit B      largest dense level-3 model [bytes] (default 2e9)
 ------------------------------------------------------------------------- */
 
 #include "fix_hele_shaw_drag.h"
@@ -145,13 +147,16 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
     } else if (strcmp(key, "placement_check") == 0) {
       need(1);
       placement_check_ = parse_yes_no(error, kStyle, key, arg[iarg + 1]);
+    } else if (strcmp(key, "memory_limit") == 0) {
+      need(1);
+      dense_memory_limit_ = positive(key, number(1), " bytes");
     } else {
       char msg[512];
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix hele_shaw/drag command: unknown keyword '%s' (expected channel, origin, pore, "
                     "cylinder, viscosity, fluid_density, mean_velocity, flow_rate, reynolds, model, tolerance, "
-                    "coefficients, section, inertia, timestep_check, placement_check, window_cells, window_margin, window_update, "
-                    "window_every)", key);
+                    "coefficients, section, inertia, timestep_check, placement_check, memory_limit, window_cells, window_margin, "
+                    "window_update, window_every)", key);
       error->all(FLERR, msg);
     }
     iarg += 1 + values;

@@ -1,5 +1,8 @@
 #include "flow/flow_cache.h"
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -83,33 +86,104 @@ std::filesystem::path default_cache_directory() {
 }
 
 std::optional<StaggeredField> load_cached_field(const std::filesystem::path& file,
-                                                const std::string& key) {
+                                                const std::string& key, std::string* why_unused) {
   std::ifstream in(file, std::ios::binary);
   if (!in) return std::nullopt;
+  auto unused = [&](const char* why) -> std::optional<StaggeredField> {
+    if (why_unused) *why_unused = why;
+    return std::nullopt;
+  };
   char magic[8];
   std::uint32_t version = 0, key_length = 0;
-  if (!in.read(magic, 8) || std::string(magic, 8) != std::string(kMagic, 8)) return std::nullopt;
-  if (!read_pod(in, version) || version != kFormatVersion) return std::nullopt;
-  if (!read_pod(in, key_length) || key_length != key.size()) return std::nullopt;
+  if (!in.read(magic, 8) || std::string(magic, 8) != std::string(kMagic, 8)) return unused("not an hsrod field file");
+  if (!read_pod(in, version) || version != kFormatVersion) return unused("another file format version");
+  if (!read_pod(in, key_length)) return unused("truncated");
+  if (key_length != key.size()) return unused("holds another scene (file name hash collision)");
   std::string stored(key_length, '\0');
-  if (!in.read(stored.data(), key_length) || stored != key) return std::nullopt;
+  if (!in.read(stored.data(), key_length)) return unused("truncated");
+  if (stored != key) return unused("holds another scene (file name hash collision)");
   std::int32_t nx = 0, ny = 0;
   MacGrid g;
   if (!read_pod(in, nx) || !read_pod(in, ny) || !read_pod(in, g.hx) || !read_pod(in, g.hy))
-    return std::nullopt;
-  if (nx < 1 || ny < 1 || nx > (1 << 20) || ny > (1 << 20)) return std::nullopt;
+    return unused("truncated");
+  if (nx < 1 || ny < 1 || nx > (1 << 20) || ny > (1 << 20)) return unused("corrupt grid size");
   g.nx = nx;
   g.ny = ny;
   std::vector<double> u, v, p;
   if (!read_doubles(in, u, std::size_t(extended_u_lattice(g).size())) ||
       !read_doubles(in, v, std::size_t(extended_v_lattice(g).size())) ||
       !read_doubles(in, p, std::size_t(nx + 2) * ny))
-    return std::nullopt;
+    return unused("truncated");
   std::uint64_t checksum = 0;
-  if (!read_pod(in, checksum)) return std::nullopt;
+  if (!read_pod(in, checksum)) return unused("truncated");
   StaggeredField field(g, std::move(u), std::move(v), std::move(p));
-  if (hash_arrays(field) != checksum) return std::nullopt;
+  if (hash_arrays(field) != checksum) return unused("corrupt (checksum mismatch)");
+  std::error_code ec;
+  std::filesystem::last_write_time(file, std::filesystem::file_time_type::clock::now(), ec);
   return field;
+}
+
+double cache_size_limit_bytes() {
+  if (const char* v = std::getenv("HSROD_CACHE_MAX_MB")) {
+    char* end = nullptr;
+    const double mb = std::strtod(v, &end);
+    if (end != v && *end == '\0' && mb > 0.0 && std::isfinite(mb)) return mb * 1e6;
+  }
+  return 2000e6;
+}
+
+std::string CachePruning::summary() const {
+  if (files_removed == 0) return "";
+  std::ostringstream s;
+  s.precision(3);
+  s << "removed " << files_removed << " least recently used cache file(s) (" << bytes_removed / 1e6
+    << " MB) to keep the cache under its limit ($HSROD_CACHE_MAX_MB, " << bytes_kept / 1e6 << " MB kept)";
+  return s.str();
+}
+
+CachePruning prune_cache_directory(const std::filesystem::path& dir, double limit_bytes,
+                                   const std::filesystem::path& keep) {
+  namespace fs = std::filesystem;
+  CachePruning result;
+  struct Entry {
+    fs::path path;
+    fs::file_time_type time;
+    double bytes;
+  };
+  std::vector<Entry> files;
+  std::error_code ec;
+  const auto now = fs::file_time_type::clock::now();
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const fs::path path = it->path();
+    const std::string name = path.filename().string();
+    std::error_code e;
+    const auto time = fs::last_write_time(path, e);
+    if (e) continue;
+    if (name.rfind("brinkman-", 0) == 0 && name.find(".bin.tmp.") != std::string::npos) {
+      if (now - time > std::chrono::hours(1)) fs::remove(path, e);  // left by an interrupted write
+      continue;
+    }
+    if (name.rfind("brinkman-", 0) != 0 || path.extension() != ".bin") continue;
+    const auto bytes = fs::file_size(path, e);
+    if (e) continue;
+    files.push_back({path, time, static_cast<double>(bytes)});
+  }
+  double total = 0.0;
+  for (const Entry& f : files) total += f.bytes;
+  std::sort(files.begin(), files.end(), [](const Entry& a, const Entry& b) { return a.time < b.time; });
+  std::error_code keep_ec;
+  for (const Entry& f : files) {
+    if (total <= limit_bytes) break;
+    if (fs::equivalent(f.path, keep, keep_ec)) continue;
+    std::error_code e;
+    if (fs::remove(f.path, e) && !e) {
+      total -= f.bytes;
+      result.files_removed++;
+      result.bytes_removed += f.bytes;
+    }
+  }
+  result.bytes_kept = total;
+  return result;
 }
 
 bool store_cached_field(const std::filesystem::path& file, const std::string& key,

@@ -45,9 +45,33 @@ std::string brinkman_cache_file_name(const std::string& key);
 // $HOME/.cache/hsrod; empty if none of these variables is set.
 std::filesystem::path default_cache_directory();
 
-// The field stored in `file` if it exists, is intact and holds `key`.
+// The field stored in `file` if it exists, is intact and holds `key`. When
+// the file exists but is not used, `why_unused` (if given) says why (not an
+// hsrod cache file, another format version, another scene - a hash
+// collision -, truncated, checksum mismatch); it stays empty for a missing
+// file. A field loaded gets its file's modification time set to now, so
+// that pruning removes the least recently used files first.
 std::optional<StaggeredField> load_cached_field(const std::filesystem::path& file,
-                                                const std::string& key);
+                                                const std::string& key,
+                                                std::string* why_unused = nullptr);
+
+// Largest total size of the cache files in a directory [bytes]:
+// $HSROD_CACHE_MAX_MB (megabytes, > 0) if set, else 2000 MB.
+double cache_size_limit_bytes();
+
+// What prune_cache_directory removed.
+struct CachePruning {
+  int files_removed = 0;
+  double bytes_removed = 0.0;  // [bytes]
+  double bytes_kept = 0.0;     // cache files left [bytes]
+  std::string summary() const;  // "" when nothing was removed
+};
+// Removes the least recently used brinkman-*.bin files of `dir` until the
+// rest totals at most `limit_bytes`, never `keep` (the file just written or
+// read); also removes temporary files of interrupted writes older than one
+// hour. Errors (a file vanishing under a concurrent run) are ignored.
+CachePruning prune_cache_directory(const std::filesystem::path& dir, double limit_bytes,
+                                   const std::filesystem::path& keep);
 // Writes the field (creating the directory); returns false and sets `error`
 // on failure (the solve is still valid, only not cached).
 bool store_cached_field(const std::filesystem::path& file, const std::string& key,

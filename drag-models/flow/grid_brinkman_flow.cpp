@@ -116,17 +116,20 @@ GridBrinkmanFlow::GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidP
   const std::string key =
       brinkman_cache_key(scaled, grid, inertia_reynolds_, exponential_wall_layer_);
 
+  std::filesystem::path cache_dir;
   if (options.use_cache) {
-    const std::filesystem::path dir =
-        options.cache_dir.empty() ? default_cache_directory() : std::filesystem::path(options.cache_dir);
-    if (!dir.empty()) cache_file_ = (dir / brinkman_cache_file_name(key)).string();
+    cache_dir = options.cache_dir.empty() ? default_cache_directory() : std::filesystem::path(options.cache_dir);
+    if (!cache_dir.empty()) cache_file_ = (cache_dir / brinkman_cache_file_name(key)).string();
   }
   if (!cache_file_.empty()) {
-    if (std::optional<StaggeredField> cached = load_cached_field(cache_file_, key)) {
+    std::string why_unused;
+    if (std::optional<StaggeredField> cached = load_cached_field(cache_file_, key, &why_unused)) {
       field_ = std::move(*cached);
       loaded_from_cache_ = true;
       return;
     }
+    // A damaged or foreign file is solved anew and overwritten: said (issue 10).
+    if (!why_unused.empty()) cache_notice_ = "cache file " + cache_file_ + " not used (" + why_unused + "), solved anew";
   }
 
   // Bounded work: refuse before the first allocation of solver size.
@@ -146,7 +149,12 @@ GridBrinkmanFlow::GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidP
   unknowns_ = solution.unknowns;
   solves_performed_ = 1;
   ++g_solves;
-  if (!cache_file_.empty()) store_cached_field(cache_file_, key, field_, &cache_error_);
+  if (!cache_file_.empty() && store_cached_field(cache_file_, key, field_, &cache_error_)) {
+    // Bounded cache (issue 10: files were never removed).
+    const double limit = options.cache_size_limit >= 0.0 ? options.cache_size_limit : cache_size_limit_bytes();
+    const std::string pruned = prune_cache_directory(cache_dir, limit, cache_file_).summary();
+    if (!pruned.empty()) cache_notice_ += (cache_notice_.empty() ? "" : "; ") + pruned;
+  }
 }
 
 // No-slip correction: the interpolant vanishes on the walls only up to its
@@ -283,6 +291,7 @@ std::string GridBrinkmanFlow::description() const {
       << (cache_file_.empty() ? ", not cached"
                               : (cache_error_.empty() ? ", cached in " + cache_file_
                                                       : ", not cached: " + cache_error_));
+  if (!cache_notice_.empty()) s << "; " << cache_notice_;
   return s.str();
 }
 

@@ -51,6 +51,10 @@ struct GridBrinkmanOptions {
   // i.e. $HSROD_CACHE_DIR, $XDG_CACHE_HOME/hsrod or ~/.cache/hsrod).
   bool use_cache = true;
   std::string cache_dir;
+  // Largest total size of the cache directory's files [bytes]; the least
+  // recently used are removed after a store. < 0: cache_size_limit_bytes()
+  // ($HSROD_CACHE_MAX_MB, else 2000 MB).
+  double cache_size_limit = -1.0;
 };
 
 // Cell size [m] the options give for `geometry`:
@@ -96,6 +100,9 @@ class GridBrinkmanFlow final : public BackgroundFlow {
   int solves_performed() const { return solves_performed_; }
   const std::string& cache_file() const { return cache_file_; }    // "" without cache
   const std::string& cache_error() const { return cache_error_; }  // "" if stored fine
+  // "" or what happened to the cache: a file not used (damaged, another
+  // format or scene) and solved anew; old files removed to stay under the limit.
+  const std::string& cache_notice() const { return cache_notice_; }
   double solve_seconds() const { return solve_seconds_; }          // 0 if loaded
   int picard_iterations() const { return picard_iterations_; }
   int unknowns() const { return unknowns_; }                        // 0 if loaded
@@ -127,7 +134,7 @@ class GridBrinkmanFlow final : public BackgroundFlow {
   StaggeredField field_;
   bool loaded_from_cache_ = false;
   int solves_performed_ = 0;
-  std::string cache_file_, cache_error_;
+  std::string cache_file_, cache_error_, cache_notice_;
   double solve_seconds_ = 0.0;
   int picard_iterations_ = 0;
   int unknowns_ = 0;

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -122,6 +123,69 @@ TEST(BackgroundFlowFactory, RejectsBadGridOptions) {
   test::expect_invalid_argument(
       [&] { GridBrinkmanFlow(s.geometry(), s.fluid, Inflow::mean_velocity(0.03), o); },
       {"exceeds max_cells"});
+}
+
+// Issue 10: "a corrupt cache file is re-solved with no notice; cache files
+// are never pruned".
+TEST(BackgroundFlowFactory, DamagedCacheFileIsReportedAndSolvedAnew) {
+  const test::PaperPoreScene s = test::load_paper_pore_scene();
+  const test::TempDir cache;
+  GridBrinkmanOptions o;
+  o.cache_dir = cache.path().string();
+  o.cell_size = 4 * um;
+  const Inflow inflow = Inflow::mean_velocity(0.03);
+  const GridBrinkmanFlow first(s.geometry(), s.fluid, inflow, o);
+  EXPECT_TRUE(first.cache_notice().empty()) << first.cache_notice();
+  // Flip one byte of the stored velocity: the checksum no longer matches.
+  {
+    std::fstream f(first.cache_file(), std::ios::binary | std::ios::in | std::ios::out);
+    f.seekp(-64, std::ios::end);
+    const char byte = 0x55;
+    f.write(&byte, 1);
+  }
+  const GridBrinkmanFlow repaired(s.geometry(), s.fluid, inflow, o);
+  EXPECT_EQ(repaired.solves_performed(), 1);
+  EXPECT_NE(repaired.cache_notice().find("not used (corrupt (checksum mismatch)), solved anew"), std::string::npos)
+      << repaired.cache_notice();
+  EXPECT_NE(repaired.description().find("corrupt (checksum mismatch)"), std::string::npos) << repaired.description();
+  // Truncated: said as well.
+  std::filesystem::resize_file(first.cache_file(), 100);
+  const GridBrinkmanFlow again(s.geometry(), s.fluid, inflow, o);
+  EXPECT_NE(again.cache_notice().find("not used (truncated)"), std::string::npos) << again.cache_notice();
+}
+
+TEST(BackgroundFlowFactory, CacheIsPrunedToItsSizeLimitLeastRecentlyUsedFirst) {
+  const test::PaperPoreScene s = test::load_paper_pore_scene();
+  const test::TempDir cache;
+  GridBrinkmanOptions o;
+  o.cache_dir = cache.path().string();
+  o.cell_size = 4 * um;
+  const Inflow inflow = Inflow::mean_velocity(0.03);
+  // Three scenes (pore radii 85, 80, 75 um) of about the same file size.
+  auto scene = [&](double radius) {
+    return make_pore_constriction(s.length, s.width, s.gap_height, radius * um, s.x_pore);
+  };
+  const GridBrinkmanFlow a(scene(85), s.fluid, inflow, o);
+  const double one_file = static_cast<double>(std::filesystem::file_size(a.cache_file()));
+  const GridBrinkmanFlow b(scene(80), s.fluid, inflow, o);
+  // a is used again (loaded): now b is the least recently used.
+  std::filesystem::last_write_time(b.cache_file(), std::filesystem::last_write_time(a.cache_file()) -
+                                                       std::chrono::seconds(10));
+  const GridBrinkmanFlow a_again(scene(85), s.fluid, inflow, o);
+  ASSERT_TRUE(a_again.loaded_from_cache());
+  // A limit of 2.5 files: storing the third removes exactly b.
+  o.cache_size_limit = 2.5 * one_file;
+  const GridBrinkmanFlow c(scene(75), s.fluid, inflow, o);
+  EXPECT_NE(c.cache_notice().find("removed 1 least recently used cache file(s)"), std::string::npos)
+      << c.cache_notice();
+  EXPECT_TRUE(std::filesystem::exists(a.cache_file()));
+  EXPECT_FALSE(std::filesystem::exists(b.cache_file()));
+  EXPECT_TRUE(std::filesystem::exists(c.cache_file()));
+  // Under the limit nothing more goes.
+  const GridBrinkmanFlow b_again(scene(80), s.fluid, inflow, o);
+  EXPECT_EQ(b_again.solves_performed(), 1);
+  EXPECT_NE(b_again.cache_notice().find("removed 1"), std::string::npos) << b_again.cache_notice();
+  EXPECT_TRUE(std::filesystem::exists(b_again.cache_file()));
 }
 
 }  // namespace

@@ -33,6 +33,10 @@ using namespace LAMMPS_NS;
 
 ComputeHeleShawProbe::ComputeHeleShawProbe(LAMMPS *instance, int &iarg, int narg, char **arg)
     : Compute(instance, iarg, narg, arg), drag_(nullptr), has_line_(false), line_pieces_(0) {
+  // LIGGGHTS 3.8's Compute leaves these uninitialised; the destructor frees
+  // both (vector exists only with a line: delete[] of garbage crashed at exit).
+  vector = nullptr;
+  array = nullptr;
   const char *style_name = "compute hele_shaw/probe";
   if (iarg >= narg) error->all(FLERR, "Illegal compute hele_shaw/probe command: missing the ID of a fix hele_shaw/drag");
   drag_id_ = arg[iarg++];

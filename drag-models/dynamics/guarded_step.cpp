@@ -58,15 +58,6 @@ bool in_wall(const Eigen::Vector3d& p, const ChannelGeometry& geometry, const Wa
   return false;
 }
 
-// Which spheres touch a wall.
-std::vector<char> contact_set(const OverdampedRod& rod, const ChannelGeometry* geometry,
-                              const WallContactParameters* walls) {
-  std::vector<char> touching(rod.size(), 0);
-  for (int i = 0; i < rod.size(); ++i)
-    touching[i] = wall_contact(*geometry, *walls, rod.positions[i], rod.radii[i]).touching;
-  return touching;
-}
-
 }  // namespace
 
 std::pair<double, double> bond_strain_and_energy(const OverdampedRod& rod) {
@@ -84,33 +75,110 @@ std::pair<double, double> bond_strain_and_energy(const OverdampedRod& rod) {
   return {strain, energy};
 }
 
+namespace {
+
+// The checks of a step from (x0, q0) to the rod's state `after` without the
+// residual (which is reported only): displacement, strain change and
+// absolute strain, bond load against drag load, walls.
+StepAssessment assess_step(const std::vector<Eigen::Vector3d>& x0, const OverdampedRod& after, const RodDrag& drag,
+                           double dt, const ChannelGeometry* geometry, const WallContactParameters* walls,
+                           const StepGuardLimits& limits) {
+  StepAssessment a;
+  const int n = after.size();
+  for (int i = 0; i < n; ++i) {
+    const double moved = (after.positions[i] - x0[i]).norm() / (2.0 * after.radii[i]);
+    a.displacement = std::isfinite(moved) ? std::max(a.displacement, moved) : HUGE_VAL;
+  }
+  // Bond strain change, the bond load it carries, and the strain itself.
+  double bond_load = 0.0;
+  for (const RodBond& b : after.bonds) {
+    const double l0 = b.rest.rest_length();
+    const double e0 = (x0[b.j] - x0[b.i]).norm() / l0 - 1.0;
+    const double e1 = (after.positions[b.j] - after.positions[b.i]).norm() / l0 - 1.0;
+    const double change = std::abs(e1 - e0);
+    a.strain_change = std::isfinite(change) ? std::max(a.strain_change, change) : HUGE_VAL;
+    a.bond_strain = std::isfinite(e1) ? std::max(a.bond_strain, std::abs(e1)) : HUGE_VAL;
+    bond_load = std::max(bond_load, b.stiffness.axial * l0 * change);
+  }
+  // Largest drag force of the step |R dx / dt|.
+  double drag_load = 0.0;
+  if (drag.coupled()) {
+    for (int i = 0; i < n; ++i) {
+      Eigen::Vector3d f = Eigen::Vector3d::Zero();
+      for (int k = 0; k < n; ++k) f += drag.coupled_resistance.block<3, 3>(3 * i, 3 * k) * (after.positions[k] - x0[k]);
+      drag_load = std::max(drag_load, f.norm() / dt);
+    }
+  } else {
+    for (int i = 0; i < n; ++i)
+      drag_load = std::max(drag_load, (drag.resistance[i] * (after.positions[i] - x0[i])).norm() / dt);
+  }
+  a.bond_load_ratio = drag_load > 0.0 ? bond_load / drag_load : (bond_load > 0.0 ? HUGE_VAL : 0.0);
+  // Walls: the new centre, and the path (sampled every quarter radius).
+  if (limits.check_walls && geometry) {
+    for (int i = 0; i < n && a.crossing_sphere < 0; ++i) {
+      const Eigen::Vector3d step = after.positions[i] - x0[i];
+      const int samples = std::clamp(static_cast<int>(std::ceil(step.norm() / (0.25 * after.radii[i]))), 1, 64);
+      for (int k = 1; k <= samples; ++k)
+        if (in_wall(x0[i] + step * (double(k) / samples), *geometry, walls) && !in_wall(x0[i], *geometry, walls)) {
+          a.crossing_sphere = i;
+          break;
+        }
+    }
+  }
+  // New wall overlap beyond max_overlap radii.
+  if (limits.check_walls && geometry && a.crossing_sphere < 0) {
+    for (int i = 0; i < n; ++i) {
+      const double radius = after.radii[i];
+      auto overlap = [&](const Eigen::Vector3d& p) {
+        double o = radius - geometry->signed_distance(p.x(), p.y());
+        if (walls && walls->gap_walls) {
+          o = std::max(o, radius - (p.z() - walls->gap_bottom));
+          o = std::max(o, radius - (walls->gap_bottom + geometry->gap_height() - p.z()));
+        }
+        return o;
+      };
+      const double grown = overlap(after.positions[i]) - std::max(0.0, overlap(x0[i]));
+      if (grown > limits.max_overlap * radius) {
+        a.crossing_sphere = i;
+        break;
+      }
+    }
+  }
+  if (a.displacement > limits.max_displacement || a.strain_change > limits.max_strain_change ||
+      a.bond_strain > limits.max_bond_strain || a.crossing_sphere >= 0) {
+    std::ostringstream p;
+    p.precision(3);
+    if (a.displacement > limits.max_displacement)
+      p << "a sphere moves " << a.displacement << " d in one step (limit " << limits.max_displacement << " d)";
+    else if (a.strain_change > limits.max_strain_change)
+      p << "a bond's strain changes by " << a.strain_change << " in one step (limit " << limits.max_strain_change
+        << ")";
+    else if (a.bond_strain > limits.max_bond_strain)
+      p << "a bond's axial strain reaches " << a.bond_strain << " (limit max_bond_strain " << limits.max_bond_strain
+        << ")";
+    else
+      p << "sphere " << a.crossing_sphere << " of the rod would cross or enter a wall (new overlap > "
+        << limits.max_overlap << " radii)";
+    a.problem = p.str();
+  }
+  return a;
+}
+
+}  // namespace
+
 StepAssessment assess_rod_step(const OverdampedRod& before, const OverdampedRod& after,
                                const OverdampedStepResult& result, const RodDrag& drag, double dt,
                                const ChannelGeometry* geometry, const WallContactParameters* walls,
                                const StepGuardLimits& limits) {
   (void)result;
-  StepAssessment a;
+  StepAssessment a = assess_step(before.positions, after, drag, dt, geometry, walls, limits);
   const int n = before.size();
-  // Displacement in diameters; a non-finite step is the worst case.
+  // Backward-Euler residual (reported only): R dy / dt = F_drive + F_ext + F_elastic(y_{n+1}).
   Eigen::VectorXd dx(3 * n), dphi(3 * n);
   for (int i = 0; i < n; ++i) {
     dx.segment<3>(3 * i) = after.positions[i] - before.positions[i];
     dphi.segment<3>(3 * i) = rotation_vector((after.orientations[i] * before.orientations[i].inverse()).normalized());
-    const double d = 2.0 * before.radii[i];
-    const double moved = dx.segment<3>(3 * i).norm() / d;
-    a.displacement = std::isfinite(moved) ? std::max(a.displacement, moved) : HUGE_VAL;
   }
-  // Bond strain change and the bond load it carries.
-  double bond_load = 0.0;
-  for (const RodBond& b : before.bonds) {
-    const double l0 = b.rest.rest_length();
-    const double e0 = (before.positions[b.j] - before.positions[b.i]).norm() / l0 - 1.0;
-    const double e1 = (after.positions[b.j] - after.positions[b.i]).norm() / l0 - 1.0;
-    const double change = std::abs(e1 - e0);
-    a.strain_change = std::isfinite(change) ? std::max(a.strain_change, change) : HUGE_VAL;
-    bond_load = std::max(bond_load, b.stiffness.axial * l0 * change);
-  }
-  // Backward-Euler residual: R dy / dt = F_drive + F_ext + F_elastic(y_{n+1}).
   Eigen::VectorXd resist = Eigen::VectorXd::Zero(6 * n), driving = Eigen::VectorXd::Zero(6 * n);
   Eigen::VectorXd translational_resist =
       drag.coupled() ? Eigen::VectorXd(drag.coupled_resistance * dx / dt) : Eigen::VectorXd::Zero(3 * n);
@@ -122,62 +190,26 @@ StepAssessment assess_rod_step(const OverdampedRod& before, const OverdampedRod&
     driving.segment<3>(6 * i) = drag.driving_force[i] + before.external_forces[i];
     driving.segment<3>(6 * i + 3) = (drag.driving_torque[i] + before.external_torques[i]) / r;
   }
-  double drag_load = 0.0;
-  for (int i = 0; i < n; ++i) drag_load = std::max(drag_load, translational_resist.segment<3>(3 * i).norm());
-  a.bond_load_ratio = drag_load > 0.0 ? bond_load / drag_load : (bond_load > 0.0 ? HUGE_VAL : 0.0);
   const Eigen::VectorXd loads_before = elastic_loads(before, geometry, walls);
   const Eigen::VectorXd loads_after = elastic_loads(after, geometry, walls);
   const double scale = resist.norm() + driving.norm() + loads_before.norm();
   const double residual = (resist - driving - loads_after).norm();
   a.residual = scale > 0.0 ? residual / scale : 0.0;
   if (!std::isfinite(a.residual)) a.residual = HUGE_VAL;
-  // Walls: the new centre, and the path (sampled every quarter radius).
-  if (limits.check_walls && geometry) {
-    for (int i = 0; i < n && a.crossing_sphere < 0; ++i) {
-      const Eigen::Vector3d step = after.positions[i] - before.positions[i];
-      const int samples = std::clamp(static_cast<int>(std::ceil(step.norm() / (0.25 * before.radii[i]))), 1, 64);
-      for (int k = 1; k <= samples; ++k)
-        if (in_wall(before.positions[i] + step * (double(k) / samples), *geometry, walls) &&
-            !in_wall(before.positions[i], *geometry, walls)) {
-          a.crossing_sphere = i;
-          break;
-        }
-    }
-  }
-  // New wall overlap beyond max_overlap radii.
-  if (limits.check_walls && geometry && a.crossing_sphere < 0) {
-    for (int i = 0; i < n; ++i) {
-      auto overlap = [&](const Eigen::Vector3d& p) {
-        double o = before.radii[i] - geometry->signed_distance(p.x(), p.y());
-        if (walls && walls->gap_walls) {
-          o = std::max(o, before.radii[i] - (p.z() - walls->gap_bottom));
-          o = std::max(o, before.radii[i] - (walls->gap_bottom + geometry->gap_height() - p.z()));
-        }
-        return o;
-      };
-      const double grown = overlap(after.positions[i]) - std::max(0.0, overlap(before.positions[i]));
-      if (grown > limits.max_overlap * before.radii[i]) {
-        a.crossing_sphere = i;
-        break;
-      }
-    }
-  }
-  std::ostringstream p;
-  p.precision(3);
-  if (a.displacement > limits.max_displacement)
-    p << "a sphere moves " << a.displacement << " d in one step (limit " << limits.max_displacement << " d)";
-  else if (a.strain_change > limits.max_strain_change)
-    p << "a bond's strain changes by " << a.strain_change << " in one step (limit " << limits.max_strain_change << ")";
-  else if (a.crossing_sphere >= 0)
-    p << "sphere " << a.crossing_sphere << " of the rod would cross or enter a wall (new overlap > "
-      << limits.max_overlap << " radii)";
-  a.problem = p.str();
   return a;
 }
 
 GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const RodDrag& drag,
                                    const RodDragEvaluator& drag_at, double dt, const ChannelGeometry* geometry,
                                    const WallContactParameters* walls, const StepGuardLimits& limits) {
+  GuardWorkspace workspace;
+  return guarded_rod_step(solver, rod, drag, drag_at, dt, geometry, walls, limits, workspace);
+}
+
+GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const RodDrag& drag,
+                                   const RodDragEvaluator& drag_at, double dt, const ChannelGeometry* geometry,
+                                   const WallContactParameters* walls, const StepGuardLimits& limits,
+                                   GuardWorkspace& ws) {
   if (!(std::isfinite(dt) && dt > 0.0)) {
     std::ostringstream m;
     m << "implicit rod step: timestep " << dt << " s must be finite and > 0";
@@ -192,102 +224,138 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
   total.hydrodynamic_forces.assign(n, Eigen::Vector3d::Zero());
   report.substeps = 0;
 
-  const OverdampedRod start = rod;
-  OverdampedRod current = rod;
-  RodDrag current_drag = drag;
+  // The rod itself is stepped; (x0, q0) of the whole step and of the
+  // current substep are kept to go back to.
+  ws.start_positions = rod.positions;
+  ws.start_orientations = rod.orientations;
+  const auto restore = [&rod](const std::vector<Eigen::Vector3d>& x, const std::vector<Eigen::Quaterniond>& q) {
+    rod.positions = x;
+    rod.orientations = q;
+  };
+  const RodDrag* current_drag = &drag;
   double done = 0.0;  // time advanced [s]
   long level = 1;     // current substep = dt / level
-  while (done < dt * (1.0 - 1e-12)) {
-    const double h = std::min(dt / static_cast<double>(level), dt - done);
-    OverdampedRod trial = current;
-    const OverdampedStepResult r = solver.step(trial, current_drag, h, geometry, walls);
-    StepAssessment a = assess_rod_step(current, trial, r, current_drag, h, geometry, walls, limits);
-    using NewtonCheck = StepGuardLimits::NewtonCheck;
-    const bool suspect = limits.newton_check == NewtonCheck::kAlways ||
-                         (limits.newton_check == NewtonCheck::kWhenSuspect &&
-                          (a.bond_load_ratio > limits.suspect_bond_load || r.wall_contact || r.self_contact));
-    if (a.problem.empty() && suspect) {
-      // Step doubling: two steps of h/2 (drag re-evaluated at the midpoint).
-      OverdampedRod half = current;
-      RodDrag half_drag = current_drag;
-      solver.step(half, half_drag, 0.5 * h, geometry, walls);
-      if (drag_at) drag_at(half, half_drag);
-      solver.step(half, half_drag, 0.5 * h, geometry, walls);
-      double difference = 0.0, moved = 0.0;
+  try {
+    while (done < dt * (1.0 - 1e-12)) {
+      const double h = std::min(dt / static_cast<double>(level), dt - done);
+      ws.substep_positions = rod.positions;
+      ws.substep_orientations = rod.orientations;
+      solver.step(rod, *current_drag, h, geometry, walls, ws.trial);
+      const OverdampedStepResult& r = ws.trial;
+      StepAssessment a = assess_step(ws.substep_positions, rod, *current_drag, h, geometry, walls, limits);
+      using NewtonCheck = StepGuardLimits::NewtonCheck;
+      const bool suspect = limits.newton_check == NewtonCheck::kAlways ||
+                           (limits.newton_check == NewtonCheck::kWhenSuspect &&
+                            (a.bond_load_ratio > limits.suspect_bond_load || r.wall_contact || r.self_contact));
+      if (a.problem.empty() && suspect) {
+        // Newton error: one more (simplified) Newton iteration with the
+        // step's factors; step doubling where they are not kept.
+        const bool corrected = solver.newton_correction(rod, *current_drag, geometry, walls, ws.correction);
+        if (!corrected) {
+          ws.half = rod;
+          ws.half.positions = ws.substep_positions;
+          ws.half.orientations = ws.substep_orientations;
+          solver.step(ws.half, *current_drag, 0.5 * h, geometry, walls, ws.half_result);
+          solver.step(ws.half, *current_drag, 0.5 * h, geometry, walls, ws.half_result);
+        }
+        double difference = 0.0, moved = 0.0;
+        for (int i = 0; i < n; ++i) {
+          const Eigen::Vector3d change = corrected ? Eigen::Vector3d(ws.correction.segment<3>(6 * i))
+                                                   : Eigen::Vector3d(ws.half.positions[i] - rod.positions[i]);
+          difference = std::max(difference, change.norm());
+          moved = std::max(moved, (rod.positions[i] - ws.substep_positions[i]).norm());
+        }
+        // Error floor: 1e-6 d (a relative test otherwise: lags are systematic
+        // and add up); while a sphere touches a wall the Hertz impact
+        // (overlap time scale ~1e-8 s) is a near-discontinuity the step cannot
+        // follow, and the error is bounded by the overlap limit instead.
+        const double d = 2.0 * rod.radii[0];
+        bool touching = r.wall_contact || r.self_contact;  // self-contact: the same Hertz impact
+        if (!touching && geometry && walls) {
+          for (int i = 0; i < n && !touching; ++i)
+            touching = wall_contact(*geometry, *walls, rod.positions[i], rod.radii[i]).touching;
+        }
+        const double floor = touching ? 0.5 * limits.max_overlap * d : 1e-6 * d * limits.max_step_error;
+        a.step_error = difference / std::max(moved, floor / limits.max_step_error);
+        if (!std::isfinite(a.step_error)) a.step_error = HUGE_VAL;
+        const bool finest = level * 2 > limits.max_substeps;
+        const bool accept = a.step_error <= limits.max_step_error || (finest && !limits.refuse_unresolved_error);
+        if (accept) {
+          if (a.step_error > limits.max_step_error) {
+            ++report.unresolved_substeps;
+            report.unresolved_error = std::max(report.unresolved_error, a.step_error);
+          }
+          // Keep the more accurate state: corrected, or the two half steps.
+          if (corrected) {
+            for (int i = 0; i < n; ++i) {
+              rod.positions[i] += ws.correction.segment<3>(6 * i);
+              rod.orientations[i] =
+                  (quaternion_from_rotation_vector(ws.correction.segment<3>(6 * i + 3)) * rod.orientations[i])
+                      .normalized();
+            }
+          } else {
+            rod.positions = ws.half.positions;
+            rod.orientations = ws.half.orientations;
+          }
+        } else {
+          std::ostringstream m;
+          m.precision(3);
+          m << "the linearised step's Newton error is " << a.step_error << " of its displacement (limit "
+            << limits.max_step_error << ")";
+          a.problem = m.str();
+        }
+      }
+      if (!a.problem.empty()) {
+        if (level * 2 > limits.max_substeps) {
+          std::ostringstream m;
+          m.precision(3);
+          m << "implicit rod step of dt = " << dt << " s refused: even substeps of " << h << " s (dt / " << level
+            << ") fail the accuracy guard at t + " << done << " s: " << a.problem;
+          if (a.bond_strain > limits.max_bond_strain && a.displacement <= limits.max_displacement &&
+              a.strain_change <= limits.max_strain_change)
+            m << "; the rod itself is over-strained (the loads stretch it beyond small-strain bonds at any step: "
+                 "a stiffer rod or a slower flow)";
+          else
+            m << "; use a smaller timestep";
+          throw StepRefused(m.str());
+        }
+        restore(ws.substep_positions, ws.substep_orientations);
+        level *= 2;
+        continue;
+      }
       for (int i = 0; i < n; ++i) {
-        difference = std::max(difference, (half.positions[i] - trial.positions[i]).norm());
-        moved = std::max(moved, (trial.positions[i] - current.positions[i]).norm());
+        total.angular_velocities[i] +=
+            rotation_vector((rod.orientations[i] * ws.substep_orientations[i].inverse()).normalized()) / dt;
+        total.hydrodynamic_forces[i] += r.hydrodynamic_forces[i] * (h / dt);
       }
-      // Error floor: 1e-6 d (a relative test otherwise: lags are systematic
-      // and add up); while a sphere touches a wall the Hertz impact
-      // (overlap time scale ~1e-8 s) is a near-discontinuity the step cannot
-      // follow, and the error is bounded by the overlap limit instead.
-      const double d = 2.0 * current.radii[0];
-      bool touching = r.wall_contact || r.self_contact;  // self-contact: the same Hertz impact
-      if (geometry && walls) {
-        const std::vector<char> a0 = contact_set(current, geometry, walls), a1 = contact_set(trial, geometry, walls);
-        touching = touching || std::find(a0.begin(), a0.end(), 1) != a0.end() ||
-                   std::find(a1.begin(), a1.end(), 1) != a1.end();
-      }
-      const double floor = touching ? 0.5 * limits.max_overlap * d : 1e-6 * d * limits.max_step_error;
-      a.step_error = difference / std::max(moved, floor / limits.max_step_error);
-      if (!std::isfinite(a.step_error)) a.step_error = HUGE_VAL;
-      const bool finest = level * 2 > limits.max_substeps;
-      if (a.step_error > limits.max_step_error && finest && !limits.refuse_unresolved_error) {
-        ++report.unresolved_substeps;
-        report.unresolved_error = std::max(report.unresolved_error, a.step_error);
-        trial = std::move(half);
-      } else if (a.step_error > limits.max_step_error) {
-        std::ostringstream m;
-        m.precision(3);
-        m << "the linearised step's Newton error (step doubling) is " << a.step_error
-          << " of its displacement (limit " << limits.max_step_error << ")";
-        a.problem = m.str();
-      } else {
-        trial = std::move(half);  // the more accurate of the two
+      total.wall_contact = total.wall_contact || r.wall_contact;
+      total.self_contact = total.self_contact || r.self_contact;
+      total.wall_force += r.wall_force * (h / dt);
+      total.largest_displacement = std::max(total.largest_displacement, r.largest_displacement);
+      report.worst.displacement = std::max(report.worst.displacement, a.displacement);
+      report.worst.strain_change = std::max(report.worst.strain_change, a.strain_change);
+      report.worst.bond_strain = std::max(report.worst.bond_strain, a.bond_strain);
+      report.worst.step_error = std::max(report.worst.step_error, a.step_error);
+      report.worst.bond_load_ratio = std::max(report.worst.bond_load_ratio, a.bond_load_ratio);
+      done += h;
+      ++report.substeps;
+      if (done < dt * (1.0 - 1e-12) && drag_at) {
+        drag_at(rod, ws.substep_drag);
+        current_drag = &ws.substep_drag;
       }
     }
-    if (!a.problem.empty()) {
-      if (level * 2 > limits.max_substeps) {
-        std::ostringstream m;
-        m.precision(3);
-        m << "implicit rod step of dt = " << dt << " s refused: even substeps of " << h << " s (dt / "
-          << level << ") fail the accuracy guard at t + " << done << " s: " << a.problem
-          << "; use a smaller timestep";
-        throw StepRefused(m.str());
-      }
-      level *= 2;
-      continue;
-    }
-    for (int i = 0; i < n; ++i) {
-      total.angular_velocities[i] +=
-          rotation_vector((trial.orientations[i] * current.orientations[i].inverse()).normalized()) / dt;
-      total.hydrodynamic_forces[i] += r.hydrodynamic_forces[i] * (h / dt);
-    }
-    total.wall_contact = total.wall_contact || r.wall_contact;
-    total.self_contact = total.self_contact || r.self_contact;
-    total.wall_force += r.wall_force * (h / dt);
-    total.largest_displacement = std::max(total.largest_displacement, r.largest_displacement);
-    report.worst.displacement = std::max(report.worst.displacement, a.displacement);
-    report.worst.strain_change = std::max(report.worst.strain_change, a.strain_change);
-    report.worst.residual = std::max(report.worst.residual, a.residual);
-    report.worst.step_error = std::max(report.worst.step_error, a.step_error);
-    report.worst.bond_load_ratio = std::max(report.worst.bond_load_ratio, a.bond_load_ratio);
-    current = std::move(trial);
-    done += h;
-    ++report.substeps;
-    if (done < dt * (1.0 - 1e-12) && drag_at) drag_at(current, current_drag);
+  } catch (...) {
+    restore(ws.start_positions, ws.start_orientations);  // the rod unchanged
+    throw;
   }
-  for (int i = 0; i < n; ++i) total.velocities[i] = (current.positions[i] - start.positions[i]) / dt;
+  for (int i = 0; i < n; ++i) total.velocities[i] = (rod.positions[i] - ws.start_positions[i]) / dt;
   if (report.substeps > 1) {
     // Displacement over the whole step, as the unguarded step reports it.
     total.largest_displacement = 0.0;
     for (int i = 0; i < n; ++i)
       total.largest_displacement =
-          std::max(total.largest_displacement, (current.positions[i] - start.positions[i]).norm());
+          std::max(total.largest_displacement, (rod.positions[i] - ws.start_positions[i]).norm());
   }
-  rod.positions = std::move(current.positions);
-  rod.orientations = std::move(current.orientations);
   const auto [strain, energy] = bond_strain_and_energy(rod);
   report.largest_bond_strain = strain;
   report.bond_energy = energy;

@@ -6,10 +6,16 @@
 // stretches the bonds it should only turn) and it can carry a sphere through
 // a wall in one step. The guard takes the step on a copy of the rod, checks
 //   - the largest sphere displacement (in diameters),
-//   - the largest change of any bond's axial strain,
-//   - the Newton (linearisation) error of the step, estimated by step
-//     doubling (one step of h against two of h/2): the nonlinear bond and
-//     contact response the single linearised step missed,
+//   - the largest change of any bond's axial strain, and the largest
+//     absolute axial strain (a rod over-strained by steps that each stretch
+//     it a little: the change limit alone lets the strain accumulate),
+//   - the Newton (linearisation) error of the step: the nonlinear bond and
+//     contact response the single linearised step missed, estimated by one
+//     more (simplified) Newton iteration with the step's own factors
+//     (OverdampedRodSolver::newton_correction: a residual evaluation and a
+//     back substitution, no new factorisation); the corrected state is the
+//     one kept. Where the solver keeps no factors (multi-sphere sections)
+//     by step doubling (one step of h against two of h/2, same drag),
 //   - that no sphere centre ends in, or passes through, a wall, and no new
 //     wall overlap exceeds max_overlap radii.
 // (The force residual of backward Euler at the new state is reported too,
@@ -20,7 +26,9 @@
 // retried as substeps of half the size (the drag re-evaluated at each
 // substep's start through a callback), down to dt / max_substeps. A step
 // still failing then is refused with StepRefused naming the figures.
-// This wraps the solver; it does not change it.
+// The drag is evaluated only at accepted states (no trial evaluations), so
+// a model that keeps state (level 4's windows) advances along the accepted
+// path only. This wraps the solver; it does not change it.
 #pragma once
 
 #include "dynamics/overdamped_rod_step.h"
@@ -34,12 +42,17 @@ namespace hsrod {
 struct StepGuardLimits {
   double max_displacement = 0.25;   // largest sphere displacement per (sub)step [sphere diameters]
   double max_strain_change = 0.01;  // largest change of a bond's axial strain per (sub)step [-]
-  // Newton (linearisation) error of a (sub)step, estimated by step doubling:
-  // the largest difference between one step of h and two of h/2, relative
+  // Largest |axial strain| of any bond after a (sub)step [-]: beyond it the
+  // beam bonds (small-strain elasticity) and the reduced drag no longer
+  // describe the rod (issue 10's stress bound).
+  double max_bond_strain = 0.5;
+  // Newton (linearisation) error of a (sub)step: the largest displacement of
+  // the Newton correction (or of step doubling, see above), relative
   // to the largest displacement of the step; differences below 1e-8 d (below
   // max_overlap radii while a sphere touches a wall) always pass [-].
   double max_step_error = 0.01;
-  // Step doubling costs two more solves, so by default it runs only where
+  // The estimate costs a bond evaluation and a back substitution (step
+  // doubling: two more solves), so by default it runs only where
   // the linearisation is suspect: a bond's load change k_n L0 |d strain|
   // above `suspect_bond_load` of the largest drag force of the step
   // |R dx / dt| (a stiff rod turning: the linearised rotation stretches its
@@ -61,7 +74,8 @@ struct StepAssessment {
   double displacement = 0.0;   // largest |dx| / d [-]
   double strain_change = 0.0;  // largest |d strain| [-]
   double residual = 0.0;       // backward-Euler force residual / load scale (reported only) [-]
-  double step_error = 0.0;     // step-doubling error / step displacement [-] (0 if not checked)
+  double step_error = 0.0;     // Newton-correction (step-doubling) error / step displacement [-] (0 if not checked)
+  double bond_strain = 0.0;    // largest |axial strain| after the step [-]
   double bond_load_ratio = 0.0;  // max k_n L0 |d strain| / max |R dx / dt| [-]
   int crossing_sphere = -1;    // a sphere whose centre ended in or crossed a wall, or -1
   std::string problem;         // "" if within the limits
@@ -85,6 +99,18 @@ class StepRefused : public std::runtime_error {
 // Drag of `rod` at its current positions (called at each substep start).
 using RodDragEvaluator = std::function<void(const OverdampedRod& rod, RodDrag& drag)>;
 
+// Scratch of guarded_rod_step, kept between steps by a caller that steps
+// the same rod repeatedly (no allocation per step once sized).
+struct GuardWorkspace {
+  std::vector<Eigen::Vector3d> start_positions, substep_positions;        // [m]
+  std::vector<Eigen::Quaterniond> start_orientations, substep_orientations;
+  OverdampedStepResult trial;
+  RodDrag substep_drag;       // drag re-evaluated at a substep start
+  Eigen::VectorXd correction;  // Newton correction (dx [m], dphi [rad])
+  OverdampedRod half;          // step doubling (where no factors are kept)
+  OverdampedStepResult half_result;
+};
+
 // Advances `rod` by dt [s] under the guard. `drag` is the drag at the
 // current positions; `drag_at` re-evaluates it for substeps (may be empty:
 // the drag is then kept for all substeps). geometry / walls as in
@@ -94,6 +120,11 @@ using RodDragEvaluator = std::function<void(const OverdampedRod& rod, RodDrag& d
 GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const RodDrag& drag,
                                    const RodDragEvaluator& drag_at, double dt, const ChannelGeometry* geometry,
                                    const WallContactParameters* walls, const StepGuardLimits& limits = {});
+// The same with the caller's scratch (one per rod).
+GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const RodDrag& drag,
+                                   const RodDragEvaluator& drag_at, double dt, const ChannelGeometry* geometry,
+                                   const WallContactParameters* walls, const StepGuardLimits& limits,
+                                   GuardWorkspace& workspace);
 
 // The checks of one step from `before` to `after` (result of solver.step
 // with `drag` and dt), without taking it.

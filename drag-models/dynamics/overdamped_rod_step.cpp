@@ -220,6 +220,7 @@ struct OverdampedRodSolver::Workspace {
   // Block-tridiagonal storage: diagonal[k] = A(k, k), upper[k] = A(k, k+1),
   // lower[k] = A(k, k-1) (6x6 blocks).
   std::vector<Matrix6d> diagonal, upper, lower;
+  std::vector<SmallBlockLu<6>> block_lus;  // LU of each eliminated diagonal block (kept for re-solves)
   // The same over groups of `group_spheres` spheres (6g x 6g blocks), sized
   // at analysis. The last group is padded to g spheres by unit rows that
   // couple to nothing (their unknowns solve to 0), so every block has one
@@ -241,6 +242,16 @@ struct OverdampedRodSolver::Workspace {
   Eigen::MatrixXd dense;
   Eigen::PartialPivLU<Eigen::MatrixXd> dense_lu;
 
+  // The factorisation of the last step, for newton_correction: which one
+  // is kept, and the last step's solution dy and dt.
+  enum class Kept { none, banded, dense, sparse };
+  Kept kept = Kept::none;
+  Eigen::VectorXd last_dy;
+  double last_dt = 0.0;
+  Eigen::VectorXd residual;  // work vector of newton_correction
+  std::vector<Eigen::Vector3d> correction_forces;
+  OverdampedStepResult contact_scratch;
+
   int analyses = 0;
   OverdampedSolverStatistics statistics;
   LinearSolver method = LinearSolver::automatic;
@@ -255,6 +266,7 @@ struct OverdampedRodSolver::Workspace {
   template <typename Add>
   void add_couplings(const OverdampedRod& rod, const RodDrag& drag, double dt, Add add) const;
   void solve_banded(int n);
+  void resolve_banded(Eigen::VectorXd& b) const;
   bool fits_groups() const;
   void solve_grouped();
   template <int B>
@@ -292,6 +304,7 @@ void OverdampedRodSolver::Workspace::analyse_structure(const OverdampedRod& rod)
   diagonal.resize(n);
   upper.resize(n);
   lower.resize(n);
+  block_lus.resize(n);
   // Groups of up to 8 spheres (48 x 48 blocks): beyond that the sparse LU
   // of the band is cheaper than dense blocks.
   group_spheres = !chain && bandwidth <= 8 ? bandwidth : 0;
@@ -401,11 +414,25 @@ void OverdampedRodSolver::Workspace::solve_banded(int n) {
       diagonal[k].noalias() -= lower[k] * upper[k - 1];
       y.noalias() -= lower[k] * rhs.segment<6>(6 * (k - 1));
     }
-    const SmallBlockLu<6> block_lu(diagonal[k]);
+    SmallBlockLu<6>& block_lu = block_lus[k];
+    block_lu.compute(diagonal[k]);
     block_lu.solve_in_place(y);
     if (k + 1 < n) block_lu.solve_in_place(upper[k]);
   }
   for (int k = n - 2; k >= 0; --k) rhs.segment<6>(6 * k).noalias() -= upper[k] * rhs.segment<6>(6 * (k + 1));
+}
+
+// Another right-hand side through the factors solve_banded left: forward
+// elimination with the unchanged lower blocks and the kept block LUs, then
+// back substitution with upper[k] = A'(k,k)^-1 A(k,k+1).
+void OverdampedRodSolver::Workspace::resolve_banded(Eigen::VectorXd& b) const {
+  const int n = static_cast<int>(block_lus.size());
+  for (int k = 0; k < n; ++k) {
+    auto y = b.segment<6>(6 * k);
+    if (k > 0) y.noalias() -= lower[k] * b.segment<6>(6 * (k - 1));
+    block_lus[k].solve_in_place(y);
+  }
+  for (int k = n - 2; k >= 0; --k) b.segment<6>(6 * k).noalias() -= upper[k] * b.segment<6>(6 * (k + 1));
 }
 
 // Self-contacts between spheres at most `group_spheres` apart stay inside
@@ -568,6 +595,7 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
       target.template block<Block::RowsAtCompileTime, Block::ColsAtCompileTime>(row % 6, col % 6) += block;
     });
     w.solve_banded(n);
+    w.kept = Workspace::Kept::banded;
     ++w.statistics.banded_steps;
   } else if (automatic && !drag.coupled() && w.fits_groups()) {
     const int g = w.group_spheres;
@@ -590,6 +618,7 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
     });
     w.solve_grouped();
     displacement = &w.group_rhs;
+    w.kept = Workspace::Kept::none;  // the grouped blocks' LUs are not kept
     ++w.statistics.banded_steps;
   } else if (w.method == LinearSolver::dense_lu || (automatic && (drag.coupled() || n <= 16))) {
     w.dense.setZero(ndof, ndof);
@@ -600,6 +629,7 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
     w.dense_lu.compute(w.dense);
     w.dy = w.dense_lu.solve(rhs);
     displacement = &w.dy;
+    w.kept = Workspace::Kept::dense;
     ++w.statistics.dense_steps;
   } else {
     // Every entry of a bond's block enters the pattern, also one that
@@ -615,9 +645,12 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
     w.factorize_sparse();
     w.dy = w.lu.solve(rhs);
     displacement = &w.dy;
+    w.kept = Workspace::Kept::sparse;
     ++w.statistics.sparse_steps;
   }
   const Eigen::VectorXd& dy = *displacement;
+  w.last_dy = dy.head(ndof);
+  w.last_dt = dt;
 
   result.velocities.resize(n);
   result.angular_velocities.resize(n);
@@ -651,6 +684,63 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   stats.bond_seconds += seconds_between(t_start, t_bonds);
   stats.contact_seconds += seconds_between(t_bonds, t_contacts);
   stats.solve_seconds += seconds_between(t_contacts, t_end);
+}
+
+bool OverdampedRodSolver::newton_correction(const OverdampedRod& rod, const RodDrag& drag,
+                                            const ChannelGeometry* geometry, const WallContactParameters* walls,
+                                            Eigen::VectorXd& delta) {
+  Workspace& w = *workspace_;
+  const int n = rod.size();
+  if (w.kept == Workspace::Kept::none || w.last_dy.size() != 6 * n || n == 0) return false;
+  const Clock::time_point t_start = Clock::now();
+  const double dt = w.last_dt;
+  const Eigen::VectorXd& dy = w.last_dy;
+  Eigen::VectorXd& r = w.residual;
+  r.setZero(6 * n);
+  // Friction first: find_contacts below replaces the step's contacts.
+  for (const SphereWallContact& c : w.wall_contacts)
+    if (c.rubbing) r.segment<6>(6 * c.sphere).noalias() -= c.friction * dy.segment<6>(6 * c.sphere) / dt;
+  if (drag.coupled()) {
+    w.velocities.resize(3 * n);
+    for (int i = 0; i < n; ++i) w.velocities.segment<3>(3 * i) = dy.segment<3>(6 * i) / dt;
+    w.hydrodynamic.noalias() = drag.coupled_resistance * w.velocities;
+  }
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d resisted = drag.coupled() ? Eigen::Vector3d(w.hydrodynamic.segment<3>(3 * i))
+                                                    : Eigen::Vector3d(drag.resistance[i] * dy.segment<3>(6 * i) / dt);
+    r.segment<3>(6 * i) += drag.driving_force[i] + rod.external_forces[i] - resisted;
+    r.segment<3>(6 * i + 3) += drag.driving_torque[i] + rod.external_torques[i] -
+                               drag.rotational_resistance[i] / dt * dy.segment<3>(6 * i + 3);
+  }
+  for (const RodBond& b : rod.bonds) {
+    SphereState si, sj;
+    si.position = rod.positions[b.i];
+    si.orientation = rod.orientations[b.i];
+    sj.position = rod.positions[b.j];
+    sj.orientation = rod.orientations[b.j];
+    const Eigen::Matrix<double, 12, 1> loads = bond_loads(si, sj, b);
+    r.segment<6>(6 * b.i) += loads.head<6>();
+    r.segment<6>(6 * b.j) += loads.tail<6>();
+  }
+  w.contact_scratch.wall_contact = w.contact_scratch.self_contact = false;
+  w.contact_scratch.wall_force = 0.0;
+  w.find_contacts(rod, geometry, walls, w.contact_scratch);
+  for (const SphereWallContact& c : w.wall_contacts) r.segment<3>(6 * c.sphere) += c.force;
+  for (const SpherePairContact& c : w.pair_contacts) {
+    r.segment<3>(6 * c.i) += c.force_on_i;
+    r.segment<3>(6 * c.j) -= c.force_on_i;
+  }
+  switch (w.kept) {
+    case Workspace::Kept::banded:
+      delta = r;
+      w.resolve_banded(delta);
+      break;
+    case Workspace::Kept::dense: delta = w.dense_lu.solve(r); break;
+    case Workspace::Kept::sparse: delta = w.lu.solve(r); break;
+    case Workspace::Kept::none: return false;
+  }
+  w.statistics.solve_seconds += seconds_between(t_start, Clock::now());
+  return true;
 }
 
 }  // namespace hsrod

@@ -121,6 +121,21 @@ class OverdampedRodSolver {
   // block storage); otherwise the sparse LU's pattern.
   int pattern_analyses() const;
 
+  // The simplified-Newton correction of the last step (an error estimate
+  // that reuses the step's factorisation, issue 13): `rod` is the state the
+  // last step produced, `drag` the drag it used. Evaluates the
+  // backward-Euler residual at the new state y1,
+  //   r = F_drive + F_ext + F_bonds(y1) + F_contacts(y1) - (R + C) dy / dt
+  // (dy, dt of the last step; C the wall friction's secant resistance), and
+  // solves (R/dt + K + C/dt) delta = r with the last step's factors: one
+  // more Newton iteration of backward Euler without a new factorisation
+  // (one bond and contact evaluation and a back substitution). `delta`:
+  // 6n (dx_i [m], dphi_i [rad]). Returns false (delta untouched) when the
+  // last step's factors are not kept (multi-sphere sections' grouped blocks)
+  // or belong to a rod of another size.
+  bool newton_correction(const OverdampedRod& rod, const RodDrag& drag, const ChannelGeometry* geometry,
+                         const WallContactParameters* walls, Eigen::VectorXd& delta);
+
   const OverdampedSolverStatistics& statistics() const;
   void set_linear_solver(LinearSolver method);
 

@@ -20,25 +20,12 @@ class SmallBlockLu {
  public:
   using Matrix = Eigen::Matrix<double, N, N>;
 
+  SmallBlockLu() = default;  // unfactorised (call compute before solving)
   // Factorises P a = L U in place of a copy of a.
-  explicit SmallBlockLu(const Matrix& a) : lu_(a) {
-#pragma GCC unroll 8
-    for (int k = 0; k < N; ++k) {
-      int pivot = k;
-      for (int r = k + 1; r < N; ++r)
-        if (std::fabs(lu_(r, k)) > std::fabs(lu_(pivot, k))) pivot = r;
-      pivots_[k] = pivot;
-      if (pivot != k)
-        for (int c = 0; c < N; ++c) std::swap(lu_(k, c), lu_(pivot, c));
-      const double inverse = 1.0 / lu_(k, k);
-      inverse_diagonal_[k] = inverse;
-#pragma GCC unroll 8
-      for (int r = k + 1; r < N; ++r) lu_(r, k) *= inverse;
-#pragma GCC unroll 8
-      for (int c = k + 1; c < N; ++c)
-#pragma GCC unroll 8
-        for (int r = k + 1; r < N; ++r) lu_(r, c) -= lu_(r, k) * lu_(k, c);
-    }
+  explicit SmallBlockLu(const Matrix& a) : lu_(a) { factorise(); }
+  void compute(const Matrix& a) {
+    lu_ = a;
+    factorise();
   }
 
   // Overwrites b (N rows, any number of columns) with a^-1 b.
@@ -62,9 +49,29 @@ class SmallBlockLu {
   }
 
  private:
-  Matrix lu_;
-  int pivots_[N];
-  double inverse_diagonal_[N];  // 1 / U(k, k)
+  void factorise() {
+#pragma GCC unroll 8
+    for (int k = 0; k < N; ++k) {
+      int pivot = k;
+      for (int r = k + 1; r < N; ++r)
+        if (std::fabs(lu_(r, k)) > std::fabs(lu_(pivot, k))) pivot = r;
+      pivots_[k] = pivot;
+      if (pivot != k)
+        for (int c = 0; c < N; ++c) std::swap(lu_(k, c), lu_(pivot, c));
+      const double inverse = 1.0 / lu_(k, k);
+      inverse_diagonal_[k] = inverse;
+#pragma GCC unroll 8
+      for (int r = k + 1; r < N; ++r) lu_(r, k) *= inverse;
+#pragma GCC unroll 8
+      for (int c = k + 1; c < N; ++c)
+#pragma GCC unroll 8
+        for (int r = k + 1; r < N; ++r) lu_(r, c) -= lu_(r, k) * lu_(k, c);
+    }
+  }
+
+  Matrix lu_ = Matrix::Zero();
+  int pivots_[N] = {};
+  double inverse_diagonal_[N] = {};  // 1 / U(k, k)
 };
 
 }  // namespace hsrod

@@ -3,7 +3,7 @@
 
    fix ID group rod/implicit bonds BONDS-ID drag DRAG-ID [walls yes|no]
                              [max_displacement f] [accuracy_guard yes|no]
-                             [step_error f] [max_substeps N]
+                             [step_error f] [max_substeps N] [max_bond_strain f]
 ------------------------------------------------------------------------- */
 
 #include "fix_rod_implicit.h"
@@ -89,15 +89,20 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       limits_.max_step_error = parse_number(error, "fix rod/implicit", key, val);
       if (!(limits_.max_step_error > 0.0 && limits_.max_step_error <= 1.0))
         error->all(FLERR, "fix rod/implicit: step_error must be in (0, 1] (relative error of a step)");
+    } else if (strcmp(key, "max_bond_strain") == 0) {
+      limits_.max_bond_strain = parse_number(error, "fix rod/implicit", key, val);
+      if (!(limits_.max_bond_strain > 0.0 && limits_.max_bond_strain <= 10.0))
+        error->all(FLERR, "fix rod/implicit: max_bond_strain must be in (0, 10] (largest |axial strain| of a bond)");
     } else if (strcmp(key, "max_substeps") == 0) {
       limits_.max_substeps = parse_integer(error, "fix rod/implicit", key, val);
       if (!(limits_.max_substeps >= 1 && limits_.max_substeps <= 1 << 20))
         error->all(FLERR, "fix rod/implicit: max_substeps must be in [1, 1048576]");
     } else {
-      char msg[256];
+      char msg[512];
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix rod/implicit command: unknown keyword '%s' (expected bonds, drag, walls, "
-                    "wall_friction, slip_velocity, max_displacement, accuracy_guard, step_error, max_substeps)", key);
+                    "wall_friction, slip_velocity, max_displacement, accuracy_guard, step_error, max_substeps, "
+                    "max_bond_strain)", key);
       error->all(FLERR, msg);
     }
   }
@@ -233,7 +238,8 @@ void FixRodImplicit::initial_integrate(int) {
       };
       try {
         hsrod::GuardedStepReport report =
-            hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_);
+            hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_,
+                                    guards_by_rod_[entry.first]);
         result = std::move(report.result);
         if (report.unresolved_substeps > 0 && !unresolved_warned_ && comm->me == 0) {
           char msg[512];

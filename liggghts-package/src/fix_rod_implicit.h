@@ -83,6 +83,7 @@ class FixRodImplicit : public Fix {
   // restart files: a fresh workspace gives the same step (tested), while
   // the contact records above are written (write_restart).
   std::map<int, hsrod::OverdampedRodSolver> solvers_by_rod_;
+  std::map<int, hsrod::GuardWorkspace> guards_by_rod_;  // the guard's scratch per rod (no state)
   // Cost model of the current run (printed by post_run): wall times of the
   // whole integrator and of the drag model, the solvers' split from their
   // statistics at setup and at the end (dynamics/step_cost_report.h).

@@ -208,3 +208,122 @@ TEST(GuardedStep, ModerateStepsAreTakenWholeAndMatchThePlainStep) {
   // (The guard keeps the step-doubled result: equal to the plain one to round-off.)
   for (int i = 0; i < 10; ++i) EXPECT_LT((a.positions[i] - b.positions[i]).norm(), 1e-8 * 3e-6);
 }
+
+namespace {
+
+// A straight soft rod (E = 15 kPa, the stress matrix's soft rod) along x,
+// pulled apart by forces +-F along its axis on the end spheres, isotropic
+// drag in still fluid, guarded steps of 1e-4 s (the stress matrix's dt).
+// Each bond then settles at the strain F / (E A) (linear axial spring
+// k_n = E A / L0; relaxation time zeta / k_n ~ 1 us << dt). The force is
+// ramped up over 200 steps, so that each step stretches the rod a little
+// (as a flow loads a rod gradually) and the strain builds up over many.
+struct PullRun {
+  double strain = 0.0;  // largest |axial strain| after the last accepted step
+  bool refused = false;
+  std::string message;
+};
+PullRun run_pull(double target_strain, int steps) {
+  const double d = 3e-6, e = 15e3;
+  RodSpec spec;
+  spec.number_of_sections = 10;
+  spec.sphere_diameter = d;
+  spec.angle = 0.5 * kPi;  // along x
+  const BeamBondMaterial material{e, 0.3, d, 0.0};
+  OverdampedRod rod = make_overdamped_rod(make_rod_layout(spec), material, d);
+  const Eigen::Vector3d axis = (rod.positions.back() - rod.positions.front()).normalized();
+  const double force = target_strain * e * material.area();
+  const auto model = make_hydrodynamic_model("isotropic", {1e-3, d / 0.6, d}, ConfinementTable::default_table());
+  const StillFluid fluid;
+  RodGeometry geometry;
+  geometry.sphere_diameter = d;
+  RodDrag drag;
+  auto drag_at = [&](const OverdampedRod& r, RodDrag& out) {
+    geometry.positions = r.positions;
+    model->evaluate(geometry, fluid, out);
+  };
+  OverdampedRodSolver solver;
+  PullRun out;
+  for (int k = 0; k < steps; ++k) {
+    const double ramp = std::min(1.0, (k + 1) / 200.0);
+    rod.external_forces.front() = -ramp * force * axis;
+    rod.external_forces.back() = ramp * force * axis;
+    drag_at(rod, drag);
+    try {
+      out.strain = guarded_rod_step(solver, rod, drag, drag_at, 1e-4, nullptr, nullptr).largest_bond_strain;
+    } catch (const StepRefused& refused) {
+      out.refused = true;
+      out.message = refused.what();
+      out.strain = bond_strain_and_energy(rod).first;  // the rod as before the refused step
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(GuardedStep, RodPulledToAModerateStrainSettlesAtTheSpringStrain) {
+  // F / (E A) = 0.3, below the default bound 0.5: run to equilibrium.
+  const PullRun r = run_pull(0.3, 400);
+  std::printf("pull to strain 0.3: %s, strain %.4f\n", r.refused ? r.message.c_str() : "accepted", r.strain);
+  EXPECT_FALSE(r.refused) << r.message;
+  EXPECT_NEAR(r.strain, 0.3, 0.003);
+}
+
+TEST(GuardedStep, OverStrainedRodIsRefusedWithTheFigures) {
+  // Issue 10's stress matrix: soft rods at dt = 1e-4 s ended with bond
+  // strains 0.70-1.18 and rc 0, because the guard limited only the strain
+  // change per step. Pulled to F / (E A) = 0.8, the run stops, naming the
+  // strain and the bound, before any bond exceeds it.
+  const PullRun r = run_pull(0.8, 400);
+  std::printf("pull to strain 0.8: %s, strain before %.4f\n", r.refused ? r.message.c_str() : "accepted", r.strain);
+  ASSERT_TRUE(r.refused) << "accepted at strain " << r.strain;
+  EXPECT_NE(r.message.find("axial strain reaches"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("max_bond_strain 0.5"), std::string::npos) << r.message;
+  EXPECT_LE(r.strain, 0.5);
+  EXPECT_GT(r.strain, 0.45);  // refused where the bound is reached, not earlier
+}
+
+TEST(GuardedStep, DragIsEvaluatedOnlyAtAcceptedSubstepStarts) {
+  // Issue 9: a stateful model (level 4's windows) must advance only along
+  // the accepted path. The stiff rod under a couple needs substeps and
+  // Newton checks at every one (kAlways): each drag evaluation must be at the
+  // start of an accepted substep (substeps - 1 per step), none at rejected
+  // attempts or at trial midpoints.
+  const CoupleScene s;
+  RodSpec spec;
+  spec.number_of_sections = s.n;
+  spec.sphere_diameter = s.d;
+  spec.angle = 0.5 * kPi;
+  OverdampedRod rod = make_overdamped_rod(make_rod_layout(spec), {s.youngs_modulus, 0.3, s.d, 0.0}, s.d);
+  rod.external_forces.front() = Eigen::Vector3d(0, s.couple_force, 0);
+  rod.external_forces.back() = Eigen::Vector3d(0, -s.couple_force, 0);
+  const auto model = make_hydrodynamic_model("isotropic", {1e-3, s.d / 0.15, s.d}, ConfinementTable::default_table());
+  const StillFluid fluid;
+  RodGeometry geometry;
+  geometry.sphere_diameter = s.d;
+  int evaluations = 0;
+  auto drag_at = [&](const OverdampedRod& r, RodDrag& out) {
+    ++evaluations;
+    geometry.positions = r.positions;
+    model->evaluate(geometry, fluid, out);
+  };
+  StepGuardLimits limits;
+  limits.newton_check = StepGuardLimits::NewtonCheck::kAlways;
+  OverdampedRodSolver solver;
+  GuardWorkspace workspace;
+  RodDrag drag;
+  int substeps = 0, steps_with_substeps = 0;
+  for (int k = 0; k < 10; ++k) {
+    geometry.positions = rod.positions;
+    model->evaluate(geometry, fluid, drag);
+    evaluations = 0;
+    const GuardedStepReport r = guarded_rod_step(solver, rod, drag, drag_at, 2e-5, nullptr, nullptr, limits, workspace);
+    EXPECT_EQ(evaluations, r.substeps - 1) << "step " << k;
+    substeps += r.substeps;
+    steps_with_substeps += r.substeps > 1;
+  }
+  std::printf("couple, dt 2e-5 s: %d substeps in 10 steps\n", substeps);
+  EXPECT_GT(steps_with_substeps, 5);  // the case exercises rejections
+}

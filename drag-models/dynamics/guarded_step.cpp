@@ -235,6 +235,15 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
   const RodDrag* current_drag = &drag;
   double done = 0.0;  // time advanced [s]
   long level = 1;     // current substep = dt / level
+  double previous_h = dt;  // adaptive: the last accepted substep [s]
+  if (limits.adaptive && static_cast<int>(rod.velocities.size()) == n) {
+    // Start at the substep the incoming velocities ask for (the
+    // displacement limit), not at dt: no state is kept between steps.
+    double speed = 0.0;
+    for (int i = 0; i < n; ++i) speed = std::max(speed, rod.velocities[i].norm() / (2.0 * rod.radii[i]));
+    while (level * 2 <= limits.max_substeps && speed * dt / static_cast<double>(level) > 0.8 * limits.max_displacement)
+      level *= 2;
+  }
   try {
     while (done < dt * (1.0 - 1e-12)) {
       const double h = std::min(dt / static_cast<double>(level), dt - done);
@@ -305,7 +314,40 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
           a.problem = m.str();
         }
       }
+      long shrink = 2;  // factor of the next substep level
+      if (a.problem.empty() && limits.adaptive) {
+        // Local truncation error h^2/2 |x''| of backward Euler, x'' from the
+        // mean velocities of this substep and of the previous one.
+        const double h_before = report.substeps == 0 ? dt : previous_h;
+        const bool have_before = report.substeps > 0 || static_cast<int>(rod.velocities.size()) == n;
+        double error = 0.0, moved = 0.0;
+        for (int i = 0; i < n; ++i) {
+          const Eigen::Vector3d v = (rod.positions[i] - ws.substep_positions[i]) / h;
+          const Eigen::Vector3d v_before = report.substeps > 0 ? ws.previous_velocities[i]
+                                           : have_before      ? rod.velocities[i]
+                                                              : Eigen::Vector3d::Zero();
+          error = std::max(error, h * h * (v - v_before).norm() / (h + h_before));
+          moved = std::max(moved, h * v.norm());
+        }
+        const double d = 2.0 * rod.radii[0];
+        const bool touching = r.wall_contact || r.self_contact;
+        const double floor = touching ? 0.5 * limits.max_overlap * d / limits.max_step_error : 1e-3 * d;
+        a.truncation_error = error / std::max(moved, floor);
+        if (!std::isfinite(a.truncation_error)) a.truncation_error = HUGE_VAL;
+        const bool finest = level * 2 > limits.max_substeps;
+        if (a.truncation_error > limits.displacement_tolerance && !finest) {
+          // h^2 scaling with a safety factor 0.8: the level that should pass.
+          const double wanted = std::sqrt(a.truncation_error / limits.displacement_tolerance) / 0.8;
+          while (shrink < 64 && shrink < wanted && level * shrink * 2 <= limits.max_substeps) shrink *= 2;
+          std::ostringstream m;
+          m.precision(3);
+          m << "the step's truncation error is " << a.truncation_error << " of its displacement (tolerance "
+            << limits.displacement_tolerance << ")";
+          a.problem = m.str();
+        }
+      }
       if (!a.problem.empty()) {
+        ++report.rejected_trials;
         if (level * 2 > limits.max_substeps) {
           std::ostringstream m;
           m.precision(3);
@@ -320,8 +362,13 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
           throw StepRefused(m.str());
         }
         restore(ws.substep_positions, ws.substep_orientations);
-        level *= 2;
+        level *= shrink;
         continue;
+      }
+      if (limits.adaptive) {
+        ws.previous_velocities.resize(n);
+        for (int i = 0; i < n; ++i) ws.previous_velocities[i] = (rod.positions[i] - ws.substep_positions[i]) / h;
+        previous_h = h;
       }
       for (int i = 0; i < n; ++i) {
         total.angular_velocities[i] +=
@@ -336,6 +383,7 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
       report.worst.strain_change = std::max(report.worst.strain_change, a.strain_change);
       report.worst.bond_strain = std::max(report.worst.bond_strain, a.bond_strain);
       report.worst.step_error = std::max(report.worst.step_error, a.step_error);
+      report.worst.truncation_error = std::max(report.worst.truncation_error, a.truncation_error);
       report.worst.bond_load_ratio = std::max(report.worst.bond_load_ratio, a.bond_load_ratio);
       done += h;
       ++report.substeps;

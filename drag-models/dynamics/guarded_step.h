@@ -67,6 +67,22 @@ struct StepGuardLimits {
   // GuardedStepReport::unresolved_substeps for the caller to report (false).
   bool refuse_unresolved_error = true;
   bool check_walls = true;          // refuse a sphere centre in or through a wall
+  // Accuracy-controlled substeps (issue 13, "steps where the motion is";
+  // off by default: one step of dt where the checks above pass, fixed and
+  // bit-reproducible). With `adaptive`, a (sub)step of h is also rejected
+  // when its local truncation error, estimated from the change of the
+  // sphere velocities (backward Euler: h^2/2 |x''|, x'' from the mean
+  // velocities of this and the previous (sub)step, the latter from
+  // OverdampedRod::velocities over the previous dt at a step's first
+  // substep), exceeds `displacement_tolerance` of the step's displacement
+  // (while a sphere touches a wall, of at least 0.5 max_overlap d /
+  // max_step_error, as the Newton check). The substep then shrinks by the
+  // factor the error asks for (a power of 2, h^2 scaling), so a large dt
+  // is taken whole where the motion is smooth and cut where it changes.
+  // Only solves: no extra drag evaluation, no state kept between steps
+  // (restarts and ranks stay identical).
+  bool adaptive = false;
+  double displacement_tolerance = 1e-2;  // local error of a (sub)step / its displacement [-]
 };
 
 // Why a (sub)step was or would be rejected; empty when accepted.
@@ -76,6 +92,7 @@ struct StepAssessment {
   double residual = 0.0;       // backward-Euler force residual / load scale (reported only) [-]
   double step_error = 0.0;     // Newton-correction (step-doubling) error / step displacement [-] (0 if not checked)
   double bond_strain = 0.0;    // largest |axial strain| after the step [-]
+  double truncation_error = 0.0;  // adaptive: local truncation error / step displacement [-] (0 if not checked)
   double bond_load_ratio = 0.0;  // max k_n L0 |d strain| / max |R dx / dt| [-]
   int crossing_sphere = -1;    // a sphere whose centre ended in or crossed a wall, or -1
   std::string problem;         // "" if within the limits
@@ -85,6 +102,7 @@ struct GuardedStepReport {
   OverdampedStepResult result;  // over the whole dt: mean velocities, dt-weighted forces
   int substeps = 1;             // substeps taken
   int unresolved_substeps = 0;  // finest substeps accepted above max_step_error (refuse_unresolved_error false)
+  int rejected_trials = 0;      // (sub)steps solved and rejected (each one solve)
   double unresolved_error = 0.0;  // their largest step error [-]
   StepAssessment worst;         // largest figures over the accepted substeps
   double largest_bond_strain = 0.0;  // max |axial strain| after the step [-]
@@ -109,6 +127,7 @@ struct GuardWorkspace {
   Eigen::VectorXd correction;  // Newton correction (dx [m], dphi [rad])
   OverdampedRod half;          // step doubling (where no factors are kept)
   OverdampedStepResult half_result;
+  std::vector<Eigen::Vector3d> previous_velocities;  // adaptive: mean velocities of the last substep [m/s]
 };
 
 // Advances `rod` by dt [s] under the guard. `drag` is the drag at the

@@ -4,6 +4,7 @@
    fix ID group rod/implicit bonds BONDS-ID drag DRAG-ID [walls yes|no]
                              [max_displacement f] [accuracy_guard yes|no]
                              [step_error f] [max_substeps N] [max_bond_strain f]
+                             [adaptive yes|no] [tolerance f]
 ------------------------------------------------------------------------- */
 
 #include "fix_rod_implicit.h"
@@ -16,7 +17,6 @@
 #include "fix_rod_bonds.h"
 #include "force.h"
 #include "group.h"
-#include "keyword_parsing.h"
 #include "lmptype.h"
 #include "modify.h"
 #include "rod_accounting.h"
@@ -35,7 +35,6 @@
 #include <cmath>
 #include <cstdio>
 #include <vector>
-#include <cstring>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -51,6 +50,8 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       guard_(true),
       substeps_(0),
       unresolved_(0),
+      substeps_taken_(0),
+      trials_rejected_(0),
       unresolved_warned_(false),
       bond_strain_(0.0),
       bond_energy_(0.0),
@@ -59,55 +60,11 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       contacts_(0),
       warned_(false),
       reported_(false) {
-  for (int iarg = 3; iarg < narg; iarg += 2) {
-    if (iarg + 1 >= narg) {
-      char msg[128];
-      std::snprintf(msg, sizeof(msg), "Illegal fix rod/implicit command: keyword %s needs a value", arg[iarg]);
-      error->all(FLERR, msg);
-    }
-    const char *key = arg[iarg], *val = arg[iarg + 1];
-    if (strcmp(key, "bonds") == 0) {
-      bonds_id_ = val;
-    } else if (strcmp(key, "drag") == 0) {
-      drag_id_ = val;
-    } else if (strcmp(key, "walls") == 0) {
-      if (strcmp(val, "yes") != 0 && strcmp(val, "no") != 0) error->all(FLERR, "fix rod/implicit: walls expects yes or no");
-      walls_ = strcmp(val, "yes") == 0;
-    } else if (strcmp(key, "wall_friction") == 0) {
-      wall_friction_ = parse_number(error, "fix rod/implicit", key, val);
-      if (!(wall_friction_ >= 0.0)) error->all(FLERR, "fix rod/implicit: wall_friction must be >= 0 (Coulomb coefficient)");
-    } else if (strcmp(key, "slip_velocity") == 0) {
-      slip_velocity_ = parse_number(error, "fix rod/implicit", key, val);
-      if (!(slip_velocity_ > 0.0)) error->all(FLERR, "fix rod/implicit: slip_velocity must be > 0 m/s");
-    } else if (strcmp(key, "max_displacement") == 0) {
-      max_displacement_ = parse_number(error, "fix rod/implicit", key, val);
-      if (!(max_displacement_ > 0.0 && max_displacement_ <= 10.0))
-        error->all(FLERR, "fix rod/implicit: max_displacement must be in (0, 10] sphere diameters per step");
-    } else if (strcmp(key, "accuracy_guard") == 0) {
-      guard_ = parse_yes_no(error, "fix rod/implicit", key, val);
-    } else if (strcmp(key, "step_error") == 0) {
-      limits_.max_step_error = parse_number(error, "fix rod/implicit", key, val);
-      if (!(limits_.max_step_error > 0.0 && limits_.max_step_error <= 1.0))
-        error->all(FLERR, "fix rod/implicit: step_error must be in (0, 1] (relative error of a step)");
-    } else if (strcmp(key, "max_bond_strain") == 0) {
-      limits_.max_bond_strain = parse_number(error, "fix rod/implicit", key, val);
-      if (!(limits_.max_bond_strain > 0.0 && limits_.max_bond_strain <= 10.0))
-        error->all(FLERR, "fix rod/implicit: max_bond_strain must be in (0, 10] (largest |axial strain| of a bond)");
-    } else if (strcmp(key, "max_substeps") == 0) {
-      limits_.max_substeps = parse_integer(error, "fix rod/implicit", key, val);
-      if (!(limits_.max_substeps >= 1 && limits_.max_substeps <= 1 << 20))
-        error->all(FLERR, "fix rod/implicit: max_substeps must be in [1, 1048576]");
-    } else {
-      char msg[512];
-      std::snprintf(msg, sizeof(msg),
-                    "Illegal fix rod/implicit command: unknown keyword '%s' (expected bonds, drag, walls, "
-                    "wall_friction, slip_velocity, max_displacement, accuracy_guard, step_error, max_substeps, "
-                    "max_bond_strain)", key);
-      error->all(FLERR, msg);
-    }
-  }
+  parse_keywords(narg, arg);
   if (bonds_id_.empty()) error->all(FLERR, "Illegal fix rod/implicit command: missing required keyword bonds");
   if (drag_id_.empty()) error->all(FLERR, "Illegal fix rod/implicit command: missing required keyword drag");
+  if (limits_.adaptive && !guard_)
+    error->all(FLERR, "fix rod/implicit: adaptive yes needs accuracy_guard yes (the substeps are the guard's)");
   // The partners must exist now (a script error is reported at its line);
   // they are looked up again at every init() and decide there themselves
   // that this fix integrates their work (implicit_partners.h).
@@ -120,8 +77,9 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
   vector_flag = 1;
   // [1] largest displacement per step / d, [2] wall force [N], [3] rods touching walls,
   // [4] most substeps of the accuracy guard, [5] largest |bond axial strain|, [6] bond energy [J],
-  // [7] substeps accepted with an unresolved Newton error (run total), [8] rods held at the box boundary
-  size_vector = 8;
+  // [7] substeps accepted with an unresolved Newton error (run total), [8] rods held at the box boundary,
+  // [9] substeps taken (run total over rods), [10] trial substeps rejected (run total over rods)
+  size_vector = 10;
   extvector = 0;
   global_freq = 1;
   restart_global = 1;  // the rods' wall-contact records
@@ -163,6 +121,7 @@ void FixRodImplicit::setup(int) {
   // Rods are counted afresh at each run's start: what the script deleted
   // between runs is its business; what goes missing during a run is an error.
   census_ = RodCensus();
+  substeps_taken_ = trials_rejected_ = 0;
   cost_ = hsrod::StepCost();
   solver_statistics_at_setup_ = solver_statistics();
   if (reported_) return;
@@ -253,6 +212,8 @@ void FixRodImplicit::initial_integrate(int) {
           unresolved_warned_ = true;
         }
         unresolved_ += report.unresolved_substeps;
+        substeps_taken_ += report.substeps;
+        trials_rejected_ += report.rejected_trials;
         substeps = std::max(substeps, report.substeps);
         strain = std::max(strain, report.largest_bond_strain);
         energy += report.bond_energy;
@@ -351,5 +312,7 @@ double FixRodImplicit::compute_vector(int n) {
   if (n == 4) return bond_strain_;
   if (n == 5) return bond_energy_;
   if (n == 6) return unresolved_;
-  return static_cast<double>(held_rods_.size());
+  if (n == 7) return static_cast<double>(held_rods_.size());
+  if (n == 8) return static_cast<double>(substeps_taken_);
+  return static_cast<double>(trials_rejected_);
 }

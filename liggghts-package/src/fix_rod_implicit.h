@@ -70,6 +70,8 @@ class FixRodImplicit : public Fix {
   hsrod::StepGuardLimits limits_; // its limits
   int substeps_;                  // last step, most substeps any rod took
   long unresolved_;               // run total of substeps accepted with an unresolved Newton error
+  long substeps_taken_;           // run total of substeps (all rods)
+  long trials_rejected_;          // run total of rejected trial substeps (all rods)
   bool unresolved_warned_;
   double bond_strain_;            // last step, largest |axial strain| [-]
   double bond_energy_;            // last step, elastic energy of all rods' bonds [J]
@@ -92,6 +94,7 @@ class FixRodImplicit : public Fix {
   hsrod::OverdampedSolverStatistics solver_statistics() const;
   bool reported_;                // set-up report printed once, not per run
   void resolve_partners();
+  void parse_keywords(int narg, char **arg);  // fix_rod_implicit_keywords.cpp
   RodCensus census_;             // spheres per rod as first seen: lost atoms are an error
   std::set<int> held_rods_;      // rods held at the box boundary (their next step would leave the box)
   void check_whole_rods(const RodGather &gather);

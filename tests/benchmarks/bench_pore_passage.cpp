@@ -66,15 +66,17 @@ std::string drag_fix(const std::string &model, bool check) {
 
 // One passage; `state` (optional) times only the passage itself, not the
 // set-up (LIGGGHTS start, flow field from the cache, stability limits).
-Outcome implicit_passage(const std::string &model, double dt, benchmark::State *state = nullptr) {
+Outcome implicit_passage(const std::string &model, double dt, benchmark::State *state = nullptr,
+                         const std::string &step_keywords = "", double *substeps = nullptr) {
   if (state) state->PauseTiming();
   LiggghtsSession s;
   s.commands(pore_header());
-  s.commands({drag_fix(model, true), "fix step all rod/implicit bonds bonds drag drag",
+  s.commands({drag_fix(model, true), "fix step all rod/implicit bonds bonds drag drag " + step_keywords,
               "compute shape all rod/shape channel_width 200e-6 channel_centre 100e-6", "timestep " + num(dt),
               "run 0"});
   if (state) state->ResumeTiming();
   s.command("run " + std::to_string(std::lround(kPassage / dt)) + " pre no");
+  if (substeps) *substeps = s.fix("step")->compute_vector(8);  // substeps of the run
   return measure(s);
 }
 
@@ -93,9 +95,28 @@ void BM_ImplicitPassage(benchmark::State &state, const std::string model) {
   const double dt = 4e-6;
   reference();
   Outcome got{};
-  for (auto _ : state) got = implicit_passage(model, dt, &state);
+  double substeps = 0.0;
+  for (auto _ : state) got = implicit_passage(model, dt, &state, "", &substeps);
   report_error(state, got, reference());
   state.counters["steps"] = std::lround(kPassage / dt);
+  state.counters["substeps"] = substeps;
+  state.counters["dt_s"] = dt;
+}
+
+// Adaptive substeps (fix rod/implicit `adaptive yes`) under a LIGGGHTS
+// timestep 10x the fixed default: fewer LIGGGHTS steps, substeps where the
+// motion asks for them.
+void BM_AdaptivePassage(benchmark::State &state, const std::string model, double tolerance) {
+  const double dt = 4e-5;
+  reference();
+  Outcome got{};
+  double substeps = 0.0;
+  char keywords[64];
+  std::snprintf(keywords, sizeof(keywords), "adaptive yes tolerance %g", tolerance);
+  for (auto _ : state) got = implicit_passage(model, dt, &state, keywords, &substeps);
+  report_error(state, got, reference());
+  state.counters["steps"] = std::lround(kPassage / dt);
+  state.counters["substeps"] = substeps;
   state.counters["dt_s"] = dt;
 }
 
@@ -227,6 +248,8 @@ void BM_StockLiggghts(benchmark::State &state) {
 BENCHMARK(BM_StockLiggghts)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_ImplicitPassage, level1_isotropic, std::string("isotropic"))->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_ImplicitPassage, level2_local, std::string("local"))->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_AdaptivePassage, level1_isotropic_adaptive, std::string("isotropic"), 1e-2)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_AdaptivePassage, level2_local_adaptive, std::string("local"), 1e-2)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_ImplicitPassage, level3_nonlocal, std::string("nonlocal"))->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_ImplicitPassage, level4_twoway, std::string("twoway"))->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_ImplicitPassage, level4_twoway_cells2, std::string("twoway window_cells 2"))->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -31,7 +31,9 @@ PassageSample sample(int step, const hsrod::OverdampedRod& rod) {
 }
 }  // namespace
 
-std::vector<PassageSample> run_pore_passage(const PassageCase& c, const std::string& cache_dir) {
+namespace {
+std::vector<PassageSample> run_passage(const PassageCase& c, const hsrod::StepGuardLimits* limits,
+                                       const std::string& cache_dir, PassageWork* work) {
   const hsrod::ChannelGeometry geometry = hsrod::make_pore_constriction(kLength, kWidth, kGap, kPoreRadius, kPoreX);
   const hsrod::FluidProperties fluid{1e-3, 1170.0};
   const auto inflow = hsrod::Inflow::mean_velocity(hsrod::mean_velocity_for_channel_reynolds(2.0, geometry, fluid));
@@ -64,14 +66,38 @@ std::vector<PassageSample> run_pore_passage(const PassageCase& c, const std::str
   // The model's state kept across steps, as fix hele_shaw/drag keeps it (RodHydrodynamics): level 4
   // re-solves its window only when the rod has moved (update_distance), not on every evaluation.
   const std::unique_ptr<hsrod::ModelState> model_state = model->make_state();
+  hsrod::GuardWorkspace guard;
+  auto drag_at = [&](const hsrod::OverdampedRod& moved, hsrod::RodDrag& out) {
+    hsrod::RodGeometry g = rod_geometry;
+    g.positions = moved.positions;
+    model->evaluate(g, *flow, out, model_state.get());
+  };
   std::vector<PassageSample> samples{sample(0, rod)};
   for (int step = 1; step <= c.steps; ++step) {
     rod_geometry.positions = rod.positions;
     model->evaluate(rod_geometry, *flow, drag, model_state.get());
-    solver.step(rod, drag, c.dt, &geometry, &walls);
+    if (limits) {
+      const hsrod::GuardedStepReport report =
+          hsrod::guarded_rod_step(solver, rod, drag, drag_at, c.dt, &geometry, &walls, *limits, guard);
+      rod.velocities = report.result.velocities;
+      work->substeps += report.substeps;
+      work->rejected_trials += report.rejected_trials;
+    } else {
+      solver.step(rod, drag, c.dt, &geometry, &walls);
+    }
     if (step % c.sample_every == 0 || step == c.steps) samples.push_back(sample(step, rod));
   }
   return samples;
+}
+}  // namespace
+
+std::vector<PassageSample> run_pore_passage(const PassageCase& c, const std::string& cache_dir) {
+  return run_passage(c, nullptr, cache_dir, nullptr);
+}
+
+std::vector<PassageSample> run_guarded_pore_passage(const PassageCase& c, const hsrod::StepGuardLimits& limits,
+                                                    const std::string& cache_dir, PassageWork& work) {
+  return run_passage(c, &limits, cache_dir, &work);
 }
 
 }  // namespace hsrod_test

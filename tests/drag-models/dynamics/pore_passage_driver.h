@@ -7,6 +7,8 @@
 // the program that recorded its reference trajectories.
 #pragma once
 
+#include "dynamics/guarded_step.h"
+
 #include <string>
 #include <vector>
 
@@ -30,5 +32,19 @@ struct PassageCase {
 
 // Samples at step 0, sample_every, ..., steps. `cache_dir`: flow-field cache.
 std::vector<PassageSample> run_pore_passage(const PassageCase& c, const std::string& cache_dir);
+
+// Work of a guarded passage: substeps taken and trial substeps rejected
+// (each one solve of the rod's system).
+struct PassageWork {
+  long substeps = 0;
+  long rejected_trials = 0;
+  long solves() const { return substeps + rejected_trials; }
+};
+
+// The same passage through the accuracy guard (guarded_rod_step with
+// `limits`, the drag re-evaluated at substeps), as fix rod/implicit takes it:
+// each step's velocities are the next step's OverdampedRod::velocities.
+std::vector<PassageSample> run_guarded_pore_passage(const PassageCase& c, const hsrod::StepGuardLimits& limits,
+                                                    const std::string& cache_dir, PassageWork& work);
 
 }  // namespace hsrod_test

@@ -258,8 +258,21 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
                             (a.bond_load_ratio > limits.suspect_bond_load || r.wall_contact || r.self_contact));
       if (a.problem.empty() && suspect) {
         // Newton error: one more (simplified) Newton iteration with the
-        // step's factors; step doubling where they are not kept.
-        const bool corrected = solver.newton_correction(rod, *current_drag, geometry, walls, ws.correction);
+        // step's factors. Not across a contact: a sphere touching a wall (or
+        // another sphere) at the start or the end of the step makes the
+        // Hertz force a near-discontinuity that the step's stiffness (without
+        // the new contact) does not describe, and the simplified iteration
+        // overshoots (a rod pressed against the pore chattered between the
+        // step and its correction); there, and where the solver keeps no
+        // factors, step doubling (with the same drag: no trial evaluation).
+        const double d = 2.0 * rod.radii[0];
+        bool touching = r.wall_contact || r.self_contact;  // self-contact: the same Hertz impact
+        if (!touching && geometry && walls) {
+          for (int i = 0; i < n && !touching; ++i)
+            touching = wall_contact(*geometry, *walls, rod.positions[i], rod.radii[i]).touching;
+        }
+        const bool corrected =
+            !touching && solver.newton_correction(rod, *current_drag, geometry, walls, ws.correction);
         if (!corrected) {
           ws.half = rod;
           ws.half.positions = ws.substep_positions;
@@ -278,12 +291,6 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
         // and add up); while a sphere touches a wall the Hertz impact
         // (overlap time scale ~1e-8 s) is a near-discontinuity the step cannot
         // follow, and the error is bounded by the overlap limit instead.
-        const double d = 2.0 * rod.radii[0];
-        bool touching = r.wall_contact || r.self_contact;  // self-contact: the same Hertz impact
-        if (!touching && geometry && walls) {
-          for (int i = 0; i < n && !touching; ++i)
-            touching = wall_contact(*geometry, *walls, rod.positions[i], rod.radii[i]).touching;
-        }
         const double floor = touching ? 0.5 * limits.max_overlap * d : 1e-6 * d * limits.max_step_error;
         a.step_error = difference / std::max(moved, floor / limits.max_step_error);
         if (!std::isfinite(a.step_error)) a.step_error = HUGE_VAL;

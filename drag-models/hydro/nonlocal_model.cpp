@@ -19,14 +19,16 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
   const double zo = obstruction_friction_;
   // Coupling matrix I + c zeta_o G (in-plane components; z is uncoupled).
   Eigen::MatrixXd coupling = Eigen::MatrixXd::Identity(3 * n, 3 * n);
+  // G(r) = G(-r) is symmetric (brinkman_green.h): one evaluation per pair
+  // fills both blocks (i,k) and (k,i).
   for (int i = 0; i < n; ++i) {
-    for (int k = 0; k < n; ++k) {
-      if (k == i) continue;
+    for (int k = i + 1; k < n; ++k) {
       const Eigen::Vector2d offset = (rod.positions[i] - rod.positions[k]).head<2>();
       if (offset.norm() <= 0.0) continue;
       const Eigen::Matrix2d g =
-          brinkman_green_function(offset, parameters_.viscosity, parameters_.gap_height);
-      coupling.block<2, 2>(3 * i, 3 * k) += kMidplaneFactor * zo * g;
+          kMidplaneFactor * zo * brinkman_green_function(offset, parameters_.viscosity, parameters_.gap_height);
+      coupling.block<2, 2>(3 * i, 3 * k) += g;
+      coupling.block<2, 2>(3 * k, 3 * i) += g;
     }
   }
   // R_o itself is an output (it enters the implicit step's matrix), so the

@@ -63,11 +63,7 @@ bool in_wall(const Eigen::Vector3d& p, const ChannelGeometry& geometry, const Wa
 std::pair<double, double> bond_strain_and_energy(const OverdampedRod& rod) {
   double strain = 0.0, energy = 0.0;
   for (const RodBond& b : rod.bonds) {
-    SphereState si, sj;
-    si.position = rod.positions[b.i];
-    si.orientation = rod.orientations[b.i];
-    sj.position = rod.positions[b.j];
-    sj.orientation = rod.orientations[b.j];
+    const SphereState si = rod.pose(b.i), sj = rod.pose(b.j);
     const BeamBondLoads l = evaluate_beam_bond(si, sj, b.rest, b.stiffness, BeamBondDamping{});
     strain = std::max(strain, std::abs(l.axial_strain));
     energy += l.elastic_energy;

@@ -713,11 +713,7 @@ bool OverdampedRodSolver::newton_correction(const OverdampedRod& rod, const RodD
                                drag.rotational_resistance[i] / dt * dy.segment<3>(6 * i + 3);
   }
   for (const RodBond& b : rod.bonds) {
-    SphereState si, sj;
-    si.position = rod.positions[b.i];
-    si.orientation = rod.orientations[b.i];
-    sj.position = rod.positions[b.j];
-    sj.orientation = rod.orientations[b.j];
+    const SphereState si = rod.pose(b.i), sj = rod.pose(b.j);
     const Eigen::Matrix<double, 12, 1> loads = bond_loads(si, sj, b);
     r.segment<6>(6 * b.i) += loads.head<6>();
     r.segment<6>(6 * b.j) += loads.tail<6>();

@@ -62,6 +62,14 @@ struct OverdampedRod {
   // step (rest before its first).
   std::vector<Eigen::Vector3d> velocities, angular_velocities;
   int size() const { return static_cast<int>(positions.size()); }
+  // Sphere i's pose as a bond end (velocities zero: the step's bond loads
+  // and strains depend on the configuration only).
+  SphereState pose(int i) const {
+    SphereState s;
+    s.position = positions[i];
+    s.orientation = orientations[i];
+    return s;
+  }
 };
 
 struct OverdampedStepResult {

@@ -12,10 +12,10 @@ Usage: interrupt_flow_solve.py HSROD SCRIPT_DIR
 """
 import os
 import signal
-import subprocess
 import sys
 import tempfile
-import time
+
+from signal_harness import main, signal_when
 
 BOUND_S = 3.0  # from the signal to the process's exit [s]
 
@@ -23,28 +23,18 @@ BOUND_S = 3.0  # from the signal to the process's exit [s]
 def interrupt(hsrod, script_dir, sig):
     with tempfile.TemporaryDirectory() as cache:
         env = dict(os.environ, HSROD_CACHE_DIR=cache)
-        p = subprocess.Popen([hsrod, "-in", "pore_flow.in", "-log", "none"], cwd=script_dir, env=env,
-                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="backslashreplace")
-        lines = []
-        for line in p.stdout:
-            lines.append(line)
-            if "factorising the Brinkman system" in line:
-                break
-        else:
-            p.wait()
-            return f"no factorisation reported (rc {p.returncode}):\n" + "".join(lines)
-        sent = time.monotonic()
-        p.send_signal(sig)
-        rest, _ = p.communicate(timeout=120)
-        waited = time.monotonic() - sent
-        output = "".join(lines) + rest
+        output, rc, waited = signal_when([hsrod, "-in", "pore_flow.in", "-log", "none"], script_dir,
+                                         lambda line: "factorising the Brinkman system" in line, sig,
+                                         env=env, timeout_s=120)
+        if waited is None:
+            return f"no factorisation reported (rc {rc}):\n" + output
         left = [f for f in os.listdir(cache)]
     name = signal.Signals(sig).name
-    print(f"{name}: exit {waited:.2f} s after the signal, rc {p.returncode}, cache entries {len(left)}")
+    print(f"{name}: exit {waited:.2f} s after the signal, rc {rc}, cache entries {len(left)}")
     problems = []
     if "ERROR" not in output or "background flow solve interrupted" not in output:
         problems.append("no ERROR naming the interrupted solve")
-    if p.returncode == 0:
+    if rc == 0:
         problems.append("exit code 0")
     if waited > BOUND_S:
         problems.append(f"took {waited:.2f} s > {BOUND_S} s to stop")
@@ -53,16 +43,5 @@ def interrupt(hsrod, script_dir, sig):
     return ("; ".join(problems) + "\n" + output) if problems else ""
 
 
-def main():
-    hsrod, script_dir = os.path.abspath(sys.argv[1]), sys.argv[2]
-    failed = False
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        problem = interrupt(hsrod, script_dir, sig)
-        if problem:
-            print(f"FAILED ({signal.Signals(sig).name}): {problem}")
-            failed = True
-    return 1 if failed else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(interrupt))

@@ -23,28 +23,15 @@ import sys
 import tempfile
 
 import numpy as np
-import vtk
 from vtk.util.numpy_support import vtk_to_numpy
+
+from vtk_readback import check, failures, read_image
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 H, D = 20e-6, 3e-6                 # gap height, sphere diameter [m]
 ROD_X, ROD_Y, N = 250e-6, 100e-6, 10  # rod across the flow (along y), 10 spheres
-failures = []
-
-
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
-
-
 def read(path):
-    reader = vtk.vtkXMLImageDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    img = reader.GetOutput()
-    if img is None or img.GetNumberOfPoints() == 0:
-        raise RuntimeError("VTK could not read " + path)
+    img = read_image(path)
     nx, ny, _ = img.GetDimensions()
     data = {name: vtk_to_numpy(img.GetPointData().GetArray(name)) for name in ("velocity", "pressure", "fluid")}
     # Point order: x fastest, then y -> arrays [j, i].

@@ -20,30 +20,15 @@ import xml.etree.ElementTree as ET
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
+from vtk_readback import check, failures, read_image
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 H = 20e-6                       # gap height [m]
 PORE_R, PORE_X = 85e-6, 300e-6  # pore cylinders [m], centred on the side walls y = 0 and y = 200 um
-failures = []
-
-
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
 
 
 def close(a, b, rel=1e-12, abs_tol=0.0):
     return abs(a - b) <= rel * max(abs(a), abs(b)) + abs_tol
-
-
-def read_image(path):
-    reader = vtk.vtkXMLImageDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    if image is None or image.GetNumberOfPoints() == 0:
-        raise RuntimeError("VTK could not read " + path)
-    return image
 
 
 def value_at(image, name, x, y, z):

@@ -206,6 +206,15 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
                                    const RodDragEvaluator& drag_at, double dt, const ChannelGeometry* geometry,
                                    const WallContactParameters* walls, const StepGuardLimits& limits,
                                    GuardWorkspace& ws) {
+  GuardedStepReport report;
+  guarded_rod_step(solver, rod, drag, drag_at, dt, geometry, walls, limits, ws, report);
+  return report;
+}
+
+void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const RodDrag& drag,
+                      const RodDragEvaluator& drag_at, double dt, const ChannelGeometry* geometry,
+                      const WallContactParameters* walls, const StepGuardLimits& limits, GuardWorkspace& ws,
+                      GuardedStepReport& report) {
   if (!(std::isfinite(dt) && dt > 0.0)) {
     std::ostringstream m;
     m << "implicit rod step: timestep " << dt << " s must be finite and > 0";
@@ -213,12 +222,16 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
   }
   if (limits.max_substeps < 1) throw std::invalid_argument("StepGuardLimits: max_substeps must be >= 1");
   const int n = rod.size();
-  GuardedStepReport report;
+  // A fresh report in the caller's memory.
+  report.substeps = report.unresolved_substeps = report.rejected_trials = 0;
+  report.unresolved_error = report.largest_bond_strain = report.bond_energy = 0.0;
+  report.worst = StepAssessment();
   OverdampedStepResult& total = report.result;
+  total.largest_displacement = total.wall_force = total.friction_force = 0.0;
+  total.wall_contact = total.self_contact = false;
   total.velocities.assign(n, Eigen::Vector3d::Zero());
   total.angular_velocities.assign(n, Eigen::Vector3d::Zero());
   total.hydrodynamic_forces.assign(n, Eigen::Vector3d::Zero());
-  report.substeps = 0;
 
   // The rod itself is stepped; (x0, q0) of the whole step and of the
   // current substep are kept to go back to.
@@ -410,7 +423,6 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
   const auto [strain, energy] = bond_strain_and_energy(rod);
   report.largest_bond_strain = strain;
   report.bond_energy = energy;
-  return report;
 }
 
 }  // namespace hsrod

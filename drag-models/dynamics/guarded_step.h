@@ -145,6 +145,12 @@ GuardedStepReport guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& r
                                    const WallContactParameters* walls, const StepGuardLimits& limits,
                                    GuardWorkspace& workspace);
 
+// The same writing into `report` (its vectors keep their memory between steps).
+void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const RodDrag& drag,
+                      const RodDragEvaluator& drag_at, double dt, const ChannelGeometry* geometry,
+                      const WallContactParameters* walls, const StepGuardLimits& limits, GuardWorkspace& workspace,
+                      GuardedStepReport& report);
+
 // The checks of one step from `before` to `after` (result of solver.step
 // with `drag` and dt), without taking it.
 StepAssessment assess_rod_step(const OverdampedRod& before, const OverdampedRod& after,

@@ -117,6 +117,21 @@ void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double rea
     cells.clear();
     return;
   }
+  if (n <= 32) {
+    // A short rod: every pair, the same test as below (sorting cells costs
+    // more than the n (n - 1) / 2 comparisons here).
+    cells.clear();
+    for (int i = 0; i < n; ++i) {
+      if (!positions[i].allFinite()) continue;  // it has already spoilt the step; no neighbours
+      for (int j = i + 1; j < n; ++j) {
+        if (!positions[j].allFinite()) continue;
+        const Eigen::Vector3d offset = positions[i] - positions[j];
+        if (std::fabs(offset.x()) > reach || std::fabs(offset.y()) > reach) continue;
+        pairs.emplace_back(i, j);
+      }
+    }
+    return;  // in lexicographic order already
+  }
   // Cells of side `reach` in the plane: a pair within reach in x and y lies
   // in the same or a neighbouring cell. The gap holds only a few spheres
   // across z, so cells stay nearly empty and the search is O(n log n).

@@ -28,6 +28,13 @@ class BackgroundFlow {
   virtual Eigen::Vector2d velocity(double x, double y) const = 0;
   // Gradient of the gap-averaged velocity, G(a, b) = d u_a / d x_b [1/s].
   virtual Eigen::Matrix2d velocity_gradient(double x, double y) const = 0;
+  // Both at once, the same values as velocity() and velocity_gradient(): a
+  // drag model needs both at every sphere in every step, and a grid flow
+  // then finds the wall distance and the interpolation stencil once.
+  virtual void velocity_and_gradient(double x, double y, Eigen::Vector2d& u, Eigen::Matrix2d& g) const {
+    u = velocity(x, y);
+    g = velocity_gradient(x, y);
+  }
   // Gap pressure [Pa], gauge, 0 at the outlet.
   virtual double pressure(double x, double y) const = 0;
   // Mean gap-averaged inlet velocity U = Q / (W H) [m/s].

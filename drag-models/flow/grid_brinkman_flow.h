@@ -90,6 +90,7 @@ class GridBrinkmanFlow final : public BackgroundFlow {
 
   Eigen::Vector2d velocity(double x, double y) const override;
   Eigen::Matrix2d velocity_gradient(double x, double y) const override;
+  void velocity_and_gradient(double x, double y, Eigen::Vector2d& u, Eigen::Matrix2d& g) const override;
   double pressure(double x, double y) const override;
   double mean_velocity() const override { return mean_velocity_; }
   const ChannelGeometry& geometry() const override { return geometry_; }

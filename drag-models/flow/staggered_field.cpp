@@ -112,6 +112,15 @@ Eigen::Matrix2d StaggeredField::velocity_gradient(double x, double y) const {
   return grad;
 }
 
+void StaggeredField::velocity_and_gradient(double x, double y, Eigen::Vector2d& u, Eigen::Matrix2d& g) const {
+  x = std::clamp(x, 0.0, grid_.nx * grid_.hx);
+  Eigen::Vector2d gu, gv;
+  interpolate(u_lat_, u_ext_, x, y, &u.x(), &gu);
+  interpolate(v_lat_, v_ext_, x, y, &u.y(), &gv);
+  g.row(0) = gu.transpose();
+  g.row(1) = gv.transpose();
+}
+
 double StaggeredField::pressure(double x, double y) const {
   const MacGrid& g = grid_;
   x = std::clamp(x, 0.0, g.nx * g.hx);

@@ -36,6 +36,8 @@ class StaggeredField {
   Eigen::Vector2d velocity(double x, double y) const;
   // d u_a / d x_b [U/H] of the interpolant.
   Eigen::Matrix2d velocity_gradient(double x, double y) const;
+  // Both from one pass over the stencils (the same values as the two above).
+  void velocity_and_gradient(double x, double y, Eigen::Vector2d& u, Eigen::Matrix2d& g) const;
   // Pressure [mu U / H], bilinear on cell centres (linear ghost column beyond
   // the outlet so that p = 0 on x = L).
   double pressure(double x, double y) const;

@@ -13,8 +13,7 @@ Eigen::Vector3d in_plane(const Eigen::Vector2d& u) { return Eigen::Vector3d(u.x(
 
 // Spheres sit at the mid-plane, where the parabolic gap profile is 3/2 of
 // the gap average: they spin with half the mid-plane vorticity.
-Eigen::Vector3d midplane_spin(const BackgroundFlow& flow, double x, double y) {
-  const Eigen::Matrix2d g = flow.velocity_gradient(x, y);
+Eigen::Vector3d midplane_spin(const Eigen::Matrix2d& g) {
   return Eigen::Vector3d(0.0, 0.0, 0.5 * 1.5 * (g(1, 0) - g(0, 1)));
 }
 }  // namespace
@@ -34,7 +33,21 @@ double LocalDragBase::obstruction_friction() const {
 void LocalDragBase::add_rotation(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
   for (int i = 0; i < rod.size(); ++i) {
     out.rotational_resistance[i] = rotational_friction_;
-    out.driving_torque[i] = rotational_friction_ * midplane_spin(flow, rod.positions[i].x(), rod.positions[i].y());
+    out.driving_torque[i] =
+        rotational_friction_ * midplane_spin(flow.velocity_gradient(rod.positions[i].x(), rod.positions[i].y()));
+  }
+}
+
+// One flow evaluation per sphere (velocity and gradient together,
+// BackgroundFlow::velocity_and_gradient), the rotation as add_rotation.
+void LocalDragBase::sample_flow(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
+  Eigen::Vector2d u;
+  Eigen::Matrix2d g;
+  for (int i = 0; i < rod.size(); ++i) {
+    flow.velocity_and_gradient(rod.positions[i].x(), rod.positions[i].y(), u, g);
+    out.driving_force[i] = in_plane(u);
+    out.rotational_resistance[i] = rotational_friction_;
+    out.driving_torque[i] = rotational_friction_ * midplane_spin(g);
   }
 }
 
@@ -46,12 +59,12 @@ void LocalDragBase::isolated_spheres(const RodGeometry& rod, const BackgroundFlo
   out.resize(rod.size());
   const double zeta = sphere_friction_;
   const double lambda = coefficients_.sphere_driving;
+  sample_flow(rod, flow, out);
   for (int i = 0; i < rod.size(); ++i) {
-    const Eigen::Vector3d u = in_plane(flow.velocity(rod.positions[i].x(), rod.positions[i].y()));
+    const Eigen::Vector3d u = out.driving_force[i];
     out.resistance[i] = zeta * Eigen::Matrix3d::Identity();
     out.driving_force[i] = zeta * lambda * u;
   }
-  add_rotation(rod, flow, out);
 }
 
 void LocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState*) const {
@@ -84,17 +97,17 @@ void LocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow,
   const double h_par = rod_n_law(rod_n_law_asymptote(c.parallel_friction * c.parallel_driving, ls, 0.0, 10), ls, 0.0, n);
   const double h_perp = rod_n_law(rod_n_law_asymptote(c.perpendicular_friction * c.perpendicular_driving, ls, g_perp * ls, 10),
                                   ls, g_perp * ls, n);
+  sample_flow(rod, flow, out);
   for (int i = 0; i < rod.size(); ++i) {
     const Eigen::Vector3d& t = tangents[rod.section_of(i)];
     const Eigen::Matrix3d along = t * t.transpose();
     const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - along;
-    const Eigen::Vector3d u = in_plane(flow.velocity(rod.positions[i].x(), rod.positions[i].y()));
+    const Eigen::Vector3d u = out.driving_force[i];  // the flow at the sphere (sample_flow)
     // Resistive-force theory with confinement: friction and driving differ
     // along and across the local tangent (Berthet et al. 2013).
     out.resistance[i] = sphere_friction_ * (c_par * along + c_perp * across);
     out.driving_force[i] = sphere_friction_ * (h_par * along + h_perp * across) * u;
   }
-  add_rotation(rod, flow, out);
 }
 
 }  // namespace hsrod

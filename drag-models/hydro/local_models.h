@@ -14,7 +14,12 @@ class LocalDragBase : public HydrodynamicModel {
   ConfinementCoefficients coefficients_;  // at this run's beta
   double sphere_friction_;      // zeta = 3 pi mu d * sphere_friction(beta) [N s/m]
   double rotational_friction_;  // pi mu d^3 [N m s]
+  // Rotational friction and driving torque (free-space, half the mid-plane vorticity) of every sphere.
   void add_rotation(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const;
+  // Per sphere: the in-plane flow velocity u(x_i) into out.driving_force
+  // (for the model to turn into its driving force) and the rotational
+  // friction and driving torque (free-space, half the mid-plane vorticity).
+  void sample_flow(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const;
   // Level 1's law on every sphere: F_i = zeta (lambda u(x_i) - v_i), with rotation.
   void isolated_spheres(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const;
   // Obstruction part zeta_o of the sphere friction (levels 3-4): the

@@ -40,17 +40,14 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
   resistance.diagonal().array() += film_friction_;
   out.coupled_resistance = 0.5 * (resistance + resistance.transpose());
 
+  sample_flow(rod, flow, out);
   Eigen::VectorXd u(3 * n);
-  for (int i = 0; i < n; ++i) {
-    const Eigen::Vector2d ui = flow.velocity(rod.positions[i].x(), rod.positions[i].y());
-    u.segment<3>(3 * i) = Eigen::Vector3d(ui.x(), ui.y(), 0.0);
-  }
+  for (int i = 0; i < n; ++i) u.segment<3>(3 * i) = out.driving_force[i];
   const Eigen::VectorXd driving = kMidplaneFactor * (obstruction * u);
   for (int i = 0; i < n; ++i) {
     out.driving_force[i] = driving.segment<3>(3 * i);
     out.resistance[i] = out.coupled_resistance.block<3, 3>(3 * i, 3 * i);
   }
-  add_rotation(rod, flow, out);
 }
 
 }  // namespace hsrod

@@ -71,7 +71,7 @@ class FixRodBonds : public Fix, public RodBondRecords {
   const hsrod::RodBondSet &bond_set() const { return bond_set_; }
   // RodBondRecords: per local atom i, for rod gathers.
   Eigen::Quaterniond orientation(int i) const override;
-  std::vector<GatheredBond> rest_states(int i) const override;
+  void rest_states(int i, std::vector<GatheredBond> &out) const override;
 
   // Under a fix rod/implicit that names this fix (looked up at init(),
   // implicit_partners.h) this fix neither moves orientations nor adds bond

@@ -23,8 +23,8 @@ Eigen::Quaterniond FixRodBonds::orientation(int i) const { return to_quaternion(
 
 void FixRodBonds::set_orientation(int i, const Eigen::Quaterniond &q) { store_quaternion(q.normalized(), orientation_[i]); }
 
-std::vector<GatheredBond> FixRodBonds::rest_states(int i) const {
-  std::vector<GatheredBond> out;
+void FixRodBonds::rest_states(int i, std::vector<GatheredBond> &out) const {
+  out.clear();
   const BondRestRecord *rec = records(i);
   for (int r = 0; r < max_bonds_per_sphere; r++) {
     if (rec[r].partner_tag == 0.0) continue;
@@ -37,7 +37,6 @@ std::vector<GatheredBond> FixRodBonds::rest_states(int i) const {
                    Eigen::Vector3d(rec[r].rest_vector[0], rec[r].rest_vector[1], rec[r].rest_vector[2]),
                    to_quaternion(rec[r].rest_rotation)});
   }
-  return out;
 }
 
 /* ---------------------------------------------------------------------- per-atom data */

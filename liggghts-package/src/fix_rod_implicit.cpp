@@ -59,7 +59,8 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       wall_force_(0.0),
       contacts_(0),
       warned_(false),
-      reported_(false) {
+      reported_(false),
+      gather_(instance) {
   parse_keywords(narg, arg);
   if (bonds_id_.empty()) error->all(FLERR, "Illegal fix rod/implicit command: missing required keyword bonds");
   if (drag_id_.empty()) error->all(FLERR, "Illegal fix rod/implicit command: missing required keyword drag");
@@ -147,7 +148,7 @@ void FixRodImplicit::initial_integrate(int) {
   const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   hsrod::RodHydrodynamics &hydro = drag_->hydrodynamics();
   const hsrod::RodBondSet &bond_set = bonds_->bond_set();
-  RodGather gather(lmp);
+  RodGather &gather = gather_;
   gather.gather(groupbit, bonds_);
   check_whole_rods(gather);
   const double dt = update->dt;
@@ -167,39 +168,46 @@ void FixRodImplicit::initial_integrate(int) {
       hold_rod(spheres);
       continue;
     }
-    hsrod::OverdampedRod rod = overdamped_rod(spheres, bond_set);
+    // The rod's structures live from step to step (no allocation per step).
+    RodScratch &scratch = scratch_by_rod_[entry.first];
+    hsrod::OverdampedRod &rod = scratch.rod;
+    update_overdamped_rod(spheres, bond_set, rod);
     // Wall friction is linearised about the velocities of the last step
     // (this fix set them: v = dx/dt).
-    for (const auto &sphere : spheres) {
-      rod.velocities.push_back(sphere.velocity);
-      rod.angular_velocities.push_back(sphere.angular_velocity);
+    rod.velocities.resize(n);
+    rod.angular_velocities.resize(n);
+    for (int k = 0; k < n; k++) {
+      rod.velocities[k] = spheres[k].velocity;
+      rod.angular_velocities[k] = spheres[k].angular_velocity;
     }
-    const hsrod::RodGeometry geometry = rod_geometry(hydro, entry.first, spheres);
-    hsrod::RodDrag drag;
+    update_rod_geometry(hydro, entry.first, spheres, scratch.geometry);
+    const hsrod::RodGeometry &geometry = scratch.geometry;
+    hsrod::RodDrag &drag = scratch.drag;
     const Clock::time_point drag_start = Clock::now();
     hydro.loads(geometry, drag);
     cost_.drag_seconds += seconds_since(drag_start);
     cost_.sphere_steps += n;
 
-    const std::vector<Eigen::Vector3d> before = rod.positions;
+    scratch.before = rod.positions;
+    const std::vector<Eigen::Vector3d> &before = scratch.before;
     // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
     const hsrod::ChannelGeometry *scene_walls = walls_ ? &hydro.geometry() : nullptr;
     hsrod::OverdampedRodSolver &solver = solvers_by_rod_[entry.first];
-    hsrod::OverdampedStepResult result;
+    const hsrod::OverdampedStepResult &result = guard_ ? scratch.report.result : scratch.result;
     if (guard_) {
       // Accuracy guard: substeps (drag re-evaluated at each) or a refusal.
-      auto drag_at = [&](const hsrod::OverdampedRod &moved, hsrod::RodDrag &out) {
+      RodScratch *at = &scratch;  // two pointers: std::function keeps them without allocating
+      auto drag_at = [this, at](const hsrod::OverdampedRod &moved, hsrod::RodDrag &out) {
         const Clock::time_point substep_drag_start = Clock::now();
-        hsrod::RodGeometry g = geometry;
-        g.positions = moved.positions;
-        hydro.loads(g, out);
-        cost_.drag_seconds += seconds_since(substep_drag_start);
+        at->substep_geometry = at->geometry;
+        at->substep_geometry.positions = moved.positions;
+        drag_->hydrodynamics().loads(at->substep_geometry, out);
+        cost_.drag_seconds += std::chrono::duration<double>(Clock::now() - substep_drag_start).count();
       };
       try {
-        hsrod::GuardedStepReport report =
-            hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_,
-                                    guards_by_rod_[entry.first]);
-        result = std::move(report.result);
+        hsrod::GuardedStepReport &report = scratch.report;
+        hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_,
+                                guards_by_rod_[entry.first], report);
         if (report.unresolved_substeps > 0 && !unresolved_warned_ && comm->me == 0) {
           char msg[512];
           std::snprintf(msg, sizeof(msg),
@@ -224,7 +232,7 @@ void FixRodImplicit::initial_integrate(int) {
         error->all(FLERR, msg);
       }
     } else {
-      result = solver.step(rod, drag, dt, scene_walls, &walls);
+      solver.step(rod, drag, dt, scene_walls, &walls, scratch.result);
       const auto strain_energy = hsrod::bond_strain_and_energy(rod);
       strain = std::max(strain, strain_energy.first);
       energy += strain_energy.second;

@@ -86,6 +86,17 @@ class FixRodImplicit : public Fix {
   // the contact records above are written (write_restart).
   std::map<int, hsrod::OverdampedRodSolver> solvers_by_rod_;
   std::map<int, hsrod::GuardWorkspace> guards_by_rod_;  // the guard's scratch per rod (no state)
+  // The step's structures per rod, rebuilt in place every step from the
+  // gather (no allocation per step; no state: restarts need none).
+  struct RodScratch {
+    hsrod::OverdampedRod rod;
+    hsrod::RodGeometry geometry, substep_geometry;
+    hsrod::RodDrag drag;
+    std::vector<Eigen::Vector3d> before;  // positions at the step's start [m]
+    hsrod::GuardedStepReport report;      // guarded step
+    hsrod::OverdampedStepResult result;   // unguarded step
+  };
+  std::map<int, RodScratch> scratch_by_rod_;
   // Cost model of the current run (printed by post_run): wall times of the
   // whole integrator and of the drag model, the solvers' split from their
   // statistics at setup and at the end (dynamics/step_cost_report.h).
@@ -96,6 +107,7 @@ class FixRodImplicit : public Fix {
   void resolve_partners();
   void parse_keywords(int narg, char **arg);  // fix_rod_implicit_keywords.cpp
   RodCensus census_;             // spheres per rod as first seen: lost atoms are an error
+  RodGather gather_;             // the rods every step (its buffers kept between steps)
   std::set<int> held_rods_;      // rods held at the box boundary (their next step would leave the box)
   void check_whole_rods(const RodGather &gather);
   void hold_rod(const std::vector<GatheredSphere> &spheres);

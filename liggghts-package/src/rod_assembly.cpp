@@ -1,8 +1,6 @@
 #include "rod_assembly.h"
 
 #include <algorithm>
-#include <map>
-#include <set>
 #include <utility>
 
 using namespace LAMMPS_NS;
@@ -16,35 +14,66 @@ hsrod::RodGeometry LAMMPS_NS::rod_geometry(const hsrod::RodHydrodynamics &hydro,
   return hydro.rod_geometry(molecule, std::move(positions), d);
 }
 
+void LAMMPS_NS::update_rod_geometry(const hsrod::RodHydrodynamics &hydro, int molecule,
+                                    const std::vector<GatheredSphere> &spheres, hsrod::RodGeometry &geometry) {
+  std::vector<Eigen::Vector3d> positions = std::move(geometry.positions);
+  positions.resize(spheres.size());
+  for (std::size_t k = 0; k < spheres.size(); k++) positions[k] = spheres[k].position;
+  geometry = hydro.rod_geometry(molecule, std::move(positions), 2.0 * spheres.front().radius);
+}
+
 hsrod::OverdampedRod LAMMPS_NS::overdamped_rod(const std::vector<GatheredSphere> &spheres,
                                                const hsrod::RodBondSet &bonds) {
-  const int n = static_cast<int>(spheres.size());
-  std::map<int, int> index;
-  for (int k = 0; k < n; k++) index[spheres[k].tag] = k;
-
   hsrod::OverdampedRod rod;
-  for (const auto &s : spheres) {
-    rod.positions.push_back(s.position);
-    rod.orientations.push_back(s.orientation);
-    rod.radii.push_back(s.radius);
-    rod.external_forces.push_back(s.force);
-    rod.external_torques.push_back(s.torque);
-  }
-  std::set<std::pair<int, int>> seen;
+  update_overdamped_rod(spheres, bonds, rod);
+  return rod;
+}
+
+void LAMMPS_NS::update_overdamped_rod(const std::vector<GatheredSphere> &spheres, const hsrod::RodBondSet &bonds,
+                                      hsrod::OverdampedRod &rod) {
+  const int n = static_cast<int>(spheres.size());
+  rod.positions.resize(n);
+  rod.orientations.resize(n);
+  rod.radii.resize(n);
+  rod.external_forces.resize(n);
+  rod.external_torques.resize(n);
   for (int k = 0; k < n; k++) {
-    for (const GatheredBond &b : spheres[k].bonds) {
-      auto partner = index.find(b.partner_tag);
-      if (partner == index.end()) continue;  // bonded to another group: not this rod
-      const auto key = std::make_pair(std::min(spheres[k].tag, b.partner_tag), std::max(spheres[k].tag, b.partner_tag));
-      if (!seen.insert(key).second) continue;  // newton_bond off stores bonds twice
+    const GatheredSphere &s = spheres[k];
+    rod.positions[k] = s.position;
+    rod.orientations[k] = s.orientation;
+    rod.radii[k] = s.radius;
+    rod.external_forces[k] = s.force;
+    rod.external_torques[k] = s.torque;
+  }
+  // Spheres come sorted by tag (rod_gather.h): a partner's index by bisection.
+  const auto index_of = [&spheres](int tag) {
+    const auto it = std::lower_bound(spheres.begin(), spheres.end(), tag,
+                                     [](const GatheredSphere &s, int t) { return s.tag < t; });
+    return it != spheres.end() && it->tag == tag ? static_cast<int>(it - spheres.begin()) : -1;
+  };
+  const auto stores_bond_to = [](const GatheredSphere &s, int tag, std::size_t before) {
+    for (std::size_t r = 0; r < before && r < s.bonds.size(); r++)
+      if (s.bonds[r].partner_tag == tag) return true;
+    return false;
+  };
+  rod.bonds.clear();
+  for (int k = 0; k < n; k++) {
+    const std::vector<GatheredBond> &stored = spheres[k].bonds;
+    for (std::size_t r = 0; r < stored.size(); r++) {
+      const GatheredBond &b = stored[r];
+      const int partner = index_of(b.partner_tag);
+      if (partner < 0) continue;  // bonded to another group: not this rod
+      // A pair counts once (newton_bond off stores a bond on both spheres):
+      // where it is first met in sphere order, then record order.
+      if (stores_bond_to(spheres[k], b.partner_tag, r)) continue;
+      if (partner < k && stores_bond_to(spheres[partner], spheres[k].tag, spheres[partner].bonds.size())) continue;
       hsrod::RodBond bond;
       bond.i = k;
-      bond.j = partner->second;
+      bond.j = partner;
       bond.rest.rest_vector_in_frame_i = b.rest_vector;
       bond.rest.rest_relative_rotation = b.rest_rotation;
       bond.stiffness = bonds.stiffness(spheres[k].radius, spheres[bond.j].radius, bond.rest.rest_length());
       rod.bonds.push_back(bond);
     }
   }
-  return rod;
 }

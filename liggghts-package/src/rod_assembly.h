@@ -22,11 +22,19 @@ namespace LAMMPS_NS {
 hsrod::RodGeometry rod_geometry(const hsrod::RodHydrodynamics &hydro, int molecule,
                                 const std::vector<GatheredSphere> &spheres, double sphere_diameter = 0.0);
 
+// The same into `geometry`, reusing its memory (diameter: the first sphere's).
+void update_rod_geometry(const hsrod::RodHydrodynamics &hydro, int molecule,
+                         const std::vector<GatheredSphere> &spheres, hsrod::RodGeometry &geometry);
+
 // The rod of the implicit step: positions, orientations, radii, the forces
 // and torques accumulated so far, and one bond per bonded pair of the rod
 // (a bond to a sphere outside the rod is skipped; a bond stored twice with
 // newton_bond off counts once) with its stiffness from `bonds`.
 hsrod::OverdampedRod overdamped_rod(const std::vector<GatheredSphere> &spheres, const hsrod::RodBondSet &bonds);
+// The same into `rod`, reusing its memory (a rod step rebuilds it every step).
+// Velocities are left as they are.
+void update_overdamped_rod(const std::vector<GatheredSphere> &spheres, const hsrod::RodBondSet &bonds,
+                           hsrod::OverdampedRod &rod);
 
 }  // namespace LAMMPS_NS
 

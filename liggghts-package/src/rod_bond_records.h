@@ -26,8 +26,10 @@ class RodBondRecords {
   virtual ~RodBondRecords() = default;
   // Body -> lab orientation of local atom i.
   virtual Eigen::Quaterniond orientation(int i) const = 0;
-  // Rest states of the bonds stored on local atom i (partner tag, rest data).
-  virtual std::vector<GatheredBond> rest_states(int i) const = 0;
+  // Rest states of the bonds stored on local atom i (partner tag, rest
+  // data), into `out` (cleared first; its memory is reused: a gather runs
+  // every step).
+  virtual void rest_states(int i, std::vector<GatheredBond> &out) const = 0;
 };
 
 }  // namespace LAMMPS_NS

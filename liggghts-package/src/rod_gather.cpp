@@ -18,8 +18,11 @@ const int kPerBond = 1 + 3 + 4;
 }  // namespace
 
 void RodGather::gather(int groupbit, const RodBondRecords *bond_fix) {
-  rods.clear();
-  std::vector<double> mine;
+  // Every buffer here is a member that keeps its memory: a rod step
+  // gathers every timestep, and re-allocating the records, the rods'
+  // vectors and each sphere's bond list cost more than the copying.
+  std::vector<double> &mine = send_;
+  mine.clear();
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit) || atom->molecule[i] <= 0) continue;
     double unwrapped[3];
@@ -34,17 +37,17 @@ void RodGather::gather(int groupbit, const RodBondRecords *bond_fix) {
     mine.push_back(atom->radius[i]);
     mine.push_back(atom->rmass[i]);
     Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
-    std::vector<GatheredBond> bonds;
+    bond_scratch_.clear();
     if (bond_fix) {
       q = bond_fix->orientation(i);
-      bonds = bond_fix->rest_states(i);
+      bond_fix->rest_states(i, bond_scratch_);
     }
     mine.push_back(q.w());
     mine.push_back(q.x());
     mine.push_back(q.y());
     mine.push_back(q.z());
-    mine.push_back(static_cast<double>(bonds.size()));
-    for (const auto &b : bonds) {
+    mine.push_back(static_cast<double>(bond_scratch_.size()));
+    for (const auto &b : bond_scratch_) {
       mine.push_back(b.partner_tag);
       for (int a = 0; a < 3; a++) mine.push_back(b.rest_vector[a]);
       mine.push_back(b.rest_rotation.w());
@@ -53,13 +56,45 @@ void RodGather::gather(int groupbit, const RodBondRecords *bond_fix) {
       mine.push_back(b.rest_rotation.z());
     }
   }
-  const std::vector<double> all = allgather_all(world, comm->nprocs, mine);
+  allgather_into(world, comm->nprocs, mine, received_, counts_, displs_);
+  const std::vector<double> &all = received_;
   const int total = static_cast<int>(all.size());
 
+  // Spheres per rod, then each rod's vector sized to them (its elements,
+  // with their bond lists' memory, are reused from the last gather).
+  for (auto &entry : fill_) entry.second = 0;
   for (int m = 0; m < total;) {
-    GatheredSphere s;
+    ++fill_[static_cast<int>(all[m + 1])];
+    m += kFixed + kPerBond * static_cast<int>(all[m + kFixed - 1]);
+  }
+  for (auto it = rods.begin(); it != rods.end();) {
+    const auto count = fill_.find(it->first);
+    if (count == fill_.end() || count->second == 0) it = rods.erase(it);
+    else ++it;
+  }
+  for (auto it = fill_.begin(); it != fill_.end();) {
+    if (it->second == 0) {
+      it = fill_.erase(it);
+      continue;
+    }
+    rods[it->first].resize(it->second);
+    it->second = 0;
+    ++it;
+  }
+
+  int last_molecule = 0;
+  std::vector<GatheredSphere> *rod = nullptr;
+  int *filled = nullptr;
+  for (int m = 0; m < total;) {
+    const int molecule = static_cast<int>(all[m + 1]);
+    if (!rod || molecule != last_molecule) {
+      rod = &rods[molecule];
+      filled = &fill_[molecule];
+      last_molecule = molecule;
+    }
+    GatheredSphere &s = (*rod)[(*filled)++];
     s.tag = static_cast<int>(all[m]);
-    s.molecule = static_cast<int>(all[m + 1]);
+    s.molecule = molecule;
     const double *p = &all[m + 2];
     s.position = Eigen::Vector3d(p[0], p[1], p[2]);
     s.velocity = Eigen::Vector3d(p[3], p[4], p[5]);
@@ -71,16 +106,17 @@ void RodGather::gather(int groupbit, const RodBondRecords *bond_fix) {
     s.orientation = Eigen::Quaterniond(p[17], p[18], p[19], p[20]);
     const int nb = static_cast<int>(p[21]);
     m += kFixed;
+    s.bonds.clear();
     for (int b = 0; b < nb; b++, m += kPerBond) {
       const double *r = &all[m];
       s.bonds.push_back({static_cast<int>(r[0]), Eigen::Vector3d(r[1], r[2], r[3]),
                          Eigen::Quaterniond(r[4], r[5], r[6], r[7])});
     }
-    rods[s.molecule].push_back(s);
   }
-  for (auto &rod : rods)
-    std::sort(rod.second.begin(), rod.second.end(),
-              [](const GatheredSphere &a, const GatheredSphere &b) { return a.tag < b.tag; });
+  const auto by_tag = [](const GatheredSphere &a, const GatheredSphere &b) { return a.tag < b.tag; };
+  for (auto &entry : rods)
+    if (!std::is_sorted(entry.second.begin(), entry.second.end(), by_tag))
+      std::sort(entry.second.begin(), entry.second.end(), by_tag);
 }
 
 std::vector<int> RodGather::rod_ids(int groupbit) {

@@ -37,6 +37,10 @@ struct GatheredSphere {
 // Concatenation of every proc's `mine`, in rank order, on every proc.
 template <typename T>
 std::vector<T> allgather_all(MPI_Comm world, int nprocs, const std::vector<T> &mine);
+// The same into `all`, with the counts and displacements in the caller's buffers.
+template <typename T>
+void allgather_into(MPI_Comm world, int nprocs, const std::vector<T> &mine, std::vector<T> &all,
+                    std::vector<int> &counts, std::vector<int> &displs);
 
 class RodGather : protected Pointers {
  public:
@@ -50,23 +54,39 @@ class RodGather : protected Pointers {
   // Sorted molecule IDs (> 0) of the group's spheres on all procs, the same
   // list on every proc: the rows of the per-rod computes.
   std::vector<int> rod_ids(int groupbit);
+
+ private:
+  // Kept between gathers by an owner that gathers every step (fix rod/implicit).
+  std::vector<double> send_, received_;
+  std::vector<int> counts_, displs_;
+  std::vector<GatheredBond> bond_scratch_;
+  std::map<int, int> fill_;  // spheres per rod in the current gather
 };
 
 template <typename T>
-std::vector<T> allgather_all(MPI_Comm world, int nprocs, const std::vector<T> &mine) {
+void allgather_into(MPI_Comm world, int nprocs, const std::vector<T> &mine, std::vector<T> &all,
+                    std::vector<int> &counts, std::vector<int> &displs) {
   const MPI_Datatype type = sizeof(T) == sizeof(double) ? MPI_DOUBLE : MPI_INT;
   static_assert(sizeof(T) == sizeof(double) || sizeof(T) == sizeof(int), "int or double data only");
   int n = static_cast<int>(mine.size());
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
+  counts.resize(nprocs);
+  displs.assign(nprocs, 0);
   MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
   int total = 0;
   for (int p = 0; p < nprocs; p++) {
     displs[p] = total;
     total += counts[p];
   }
-  std::vector<T> all(std::max(total, 1));
+  all.resize(std::max(total, 1));
   MPI_Allgatherv(mine.data(), n, type, all.data(), counts.data(), displs.data(), type, world);
   all.resize(total);
+}
+
+template <typename T>
+std::vector<T> allgather_all(MPI_Comm world, int nprocs, const std::vector<T> &mine) {
+  std::vector<T> all;
+  std::vector<int> counts, displs;
+  allgather_into(world, nprocs, mine, all, counts, displs);
   return all;
 }
 

@@ -420,9 +420,11 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
       total.largest_displacement =
           std::max(total.largest_displacement, (rod.positions[i] - ws.start_positions[i]).norm());
   }
-  const auto [strain, energy] = bond_strain_and_energy(rod);
-  report.largest_bond_strain = strain;
-  report.bond_energy = energy;
+  if (limits.report_bond_state) {
+    const auto [strain, energy] = bond_strain_and_energy(rod);
+    report.largest_bond_strain = strain;
+    report.bond_energy = energy;
+  }
 }
 
 }  // namespace hsrod

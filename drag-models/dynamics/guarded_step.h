@@ -67,6 +67,10 @@ struct StepGuardLimits {
   // GuardedStepReport::unresolved_substeps for the caller to report (false).
   bool refuse_unresolved_error = true;
   bool check_walls = true;          // refuse a sphere centre in or through a wall
+  // Fill GuardedStepReport::largest_bond_strain and bond_energy (a pass over
+  // every bond after the step); a caller that reports them only on demand
+  // evaluates bond_strain_and_energy itself when asked.
+  bool report_bond_state = true;
   // Accuracy-controlled substeps (issue 13, "steps where the motion is";
   // off by default: one step of dt where the checks above pass, fixed and
   // bit-reproducible). With `adaptive`, a (sub)step of h is also rejected

@@ -228,6 +228,7 @@ void FixRodBonds::compute_bonds() {
 
   elastic_energy_ = 0.0;
   max_strain_ = 0.0;
+  implicit_state_pending_ = false;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     for (int m = 0; m < atom->num_bond[i]; m++) {
@@ -292,7 +293,14 @@ void FixRodBonds::compute_bonds() {
   }
 }
 
+void FixRodBonds::refresh_implicit_bond_state() {
+  if (!implicit_state_pending_ || !integrated_implicitly_ || !implicit_bond_state_) return;
+  implicit_bond_state_(elastic_energy_, max_strain_);
+  implicit_state_pending_ = false;
+}
+
 double FixRodBonds::compute_scalar() {
+  refresh_implicit_bond_state();
   double total = 0.0;
   MPI_Allreduce(&elastic_energy_, &total, 1, MPI_DOUBLE, MPI_SUM, world);
   return total;
@@ -301,6 +309,7 @@ double FixRodBonds::compute_scalar() {
 double FixRodBonds::compute_vector(int n) {
   if (n == 0) return compute_scalar();
   if (n == 1) {
+    refresh_implicit_bond_state();
     double largest = 0.0;
     MPI_Allreduce(&max_strain_, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
     return largest;

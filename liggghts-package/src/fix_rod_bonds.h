@@ -31,6 +31,7 @@ FixStyle(rod/bonds,FixRodBonds)
 
 #include <Eigen/Geometry>
 
+#include <functional>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -79,12 +80,13 @@ class FixRodBonds : public Fix, public RodBondRecords {
   // and reports the bonds' state (set_implicit_bond_state).
   bool integrated_implicitly() const { return integrated_implicitly_; }
   // Under fix rod/implicit the bonds are evaluated by the integrator, which
-  // reports here what f_ID shows: this processor's share of the elastic
-  // energy [J] and the largest |axial strain| [-] after the step.
-  void set_implicit_bond_state(double elastic_energy, double max_strain) {
-    elastic_energy_ = elastic_energy;
-    max_strain_ = max_strain;
-  }
+  // provides what f_ID shows: this processor's share of the elastic energy
+  // [J] and the largest |axial strain| [-] after its last step. It is asked
+  // only when f_ID is read (thermo, fix print), not every step: a bond pass
+  // over every rod costs ~5 % of a step. The integrator marks each step.
+  using ImplicitBondState = std::function<void(double &elastic_energy, double &max_strain)>;
+  void set_implicit_bond_state(ImplicitBondState evaluate) { implicit_bond_state_ = std::move(evaluate); }
+  void implicit_step_taken() { implicit_state_pending_ = true; }
   void set_orientation(int i, const Eigen::Quaterniond &q);
 
  private:
@@ -97,6 +99,9 @@ class FixRodBonds : public Fix, public RodBondRecords {
   static const int record_doubles = sizeof(BondRestRecord) / sizeof(double);
   static const int peratom_doubles = 4 + max_bonds_per_sphere * record_doubles;
 
+  ImplicitBondState implicit_bond_state_;
+  bool implicit_state_pending_ = false;  // a step was taken since the bond state was last evaluated
+  void refresh_implicit_bond_state();
   hsrod::RodBondSet bond_set_; // E [Pa], nu [-], damping (fraction of critical) [-], bond diameter / sphere diameter [-]
   bool timestep_check_;        // refuse a timestep above the explicit limit
   bool exclude_pairs_;         // keep the rod out of its own pair contacts

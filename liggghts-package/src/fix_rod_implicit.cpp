@@ -31,6 +31,7 @@
 #include <mpi.h>
 
 #include <chrono>
+#include <memory>
 #include <string>
 #include <cmath>
 #include <cstdio>
@@ -59,6 +60,7 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       wall_force_(0.0),
       contacts_(0),
       warned_(false),
+      bond_state_fresh_(true),
       reported_(false),
       gather_(instance) {
   parse_keywords(narg, arg);
@@ -75,6 +77,7 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
   // Displacement, strain and wall failures refuse the run; an unresolved
   // Newton error at the finest substep is accepted with a warning and counted.
   limits_.refuse_unresolved_error = false;
+  limits_.report_bond_state = false;  // on demand (refresh_bond_state)
   vector_flag = 1;
   // [1] largest displacement per step / d, [2] wall force [N], [3] rods touching walls,
   // [4] most substeps of the accuracy guard, [5] largest |bond axial strain|, [6] bond energy [J],
@@ -119,6 +122,16 @@ hsrod::OverdampedSolverStatistics FixRodImplicit::solver_statistics() const {
 }
 
 void FixRodImplicit::setup(int) {
+  // f_bonds shows the bond state after this fix's steps; rods are gathered
+  // whole on every processor, so rank 0 holds the energy.
+  // (The fix rod/bonds may outlive this fix: the call then does nothing.)
+  const std::weak_ptr<int> alive = lifetime_;
+  bonds_->set_implicit_bond_state([this, alive](double &elastic_energy, double &max_strain) {
+    if (alive.expired()) return;
+    refresh_bond_state();
+    elastic_energy = comm->me == 0 ? bond_energy_ : 0.0;
+    max_strain = bond_strain_;
+  });
   // Rods are counted afresh at each run's start: what the script deleted
   // between runs is its business; what goes missing during a run is an error.
   census_ = RodCensus();
@@ -159,8 +172,9 @@ void FixRodImplicit::initial_integrate(int) {
   walls.friction_coefficient = wall_friction_;
   walls.slip_velocity = slip_velocity_;
 
-  double largest = 0.0, wall_force = 0.0, strain = 0.0, energy = 0.0;
+  double largest = 0.0, wall_force = 0.0;
   int contacts = 0, substeps = 1;
+  stepped_rods_.clear();
   for (const auto &entry : gather.rods) {
     const std::vector<GatheredSphere> &spheres = entry.second;
     const int n = static_cast<int>(spheres.size());
@@ -223,8 +237,6 @@ void FixRodImplicit::initial_integrate(int) {
         substeps_taken_ += report.substeps;
         trials_rejected_ += report.rejected_trials;
         substeps = std::max(substeps, report.substeps);
-        strain = std::max(strain, report.largest_bond_strain);
-        energy += report.bond_energy;
       } catch (const std::exception &e) {
         char msg[768];
         std::snprintf(msg, sizeof(msg), "fix rod/implicit: rod %d at step " BIGINT_FORMAT ": %s", entry.first,
@@ -233,10 +245,8 @@ void FixRodImplicit::initial_integrate(int) {
       }
     } else {
       solver.step(rod, drag, dt, scene_walls, &walls, scratch.result);
-      const auto strain_energy = hsrod::bond_strain_and_energy(rod);
-      strain = std::max(strain, strain_energy.first);
-      energy += strain_energy.second;
     }
+    stepped_rods_.push_back(entry.first);  // its bond state (strain, energy) on demand
     // A step that would carry a sphere centre out of the box (the outlet,
     // or any non-periodic face) is not taken: the rod is held where it is,
     // whole, instead of LIGGGHTS dropping its spheres one by one.
@@ -287,10 +297,8 @@ void FixRodImplicit::initial_integrate(int) {
   wall_force_ = wall_force;
   contacts_ = contacts;
   substeps_ = substeps;
-  bond_strain_ = strain;
-  bond_energy_ = energy;
-  // Rods are gathered whole on every processor: rank 0 holds the energy.
-  bonds_->set_implicit_bond_state(comm->me == 0 ? energy : 0.0, strain);
+  bond_state_fresh_ = false;
+  bonds_->implicit_step_taken();
   if (!guard_ && largest > max_displacement_ && !warned_ && comm->me == 0) {
     char msg[256];
     std::snprintf(msg, sizeof(msg),
@@ -317,6 +325,7 @@ double FixRodImplicit::compute_vector(int n) {
   if (n == 1) return wall_force_;
   if (n == 2) return contacts_;
   if (n == 3) return substeps_;
+  if (n == 4 || n == 5) refresh_bond_state();
   if (n == 4) return bond_strain_;
   if (n == 5) return bond_energy_;
   if (n == 6) return unresolved_;

@@ -24,8 +24,10 @@ FixStyle(rod/implicit,FixRodImplicit)
 #include "dynamics/step_cost_report.h"
 
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -79,6 +81,10 @@ class FixRodImplicit : public Fix {
   double wall_force_;             // last step, sum of wall contact forces [N]
   int contacts_;                  // last step, number of rods touching a wall
   bool warned_;
+  std::vector<int> stepped_rods_;  // rods stepped in the last step (their bond state on demand)
+  bool bond_state_fresh_;          // bond_strain_, bond_energy_ are those of the last step
+  std::shared_ptr<int> lifetime_ = std::make_shared<int>(0);  // expires with this fix (fix rod/bonds' callback)
+  void refresh_bond_state();
   std::map<int, RodContactRecord> contacts_by_rod_;
   // Per rod (molecule ID): the step's workspace and LU analysis, kept
   // between steps so a long rod is not re-analysed every step. Not in

@@ -18,6 +18,7 @@
 #include "rod_gather.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -74,6 +75,21 @@ void FixRodImplicit::check_whole_rods(const RodGather &gather) {
                   "the rods apart", overlap.rod_a, overlap.rod_b, update->ntimestep, overlap.distance_over_contact);
     error->all(FLERR, msg);
   }
+}
+
+// Largest |axial strain| and elastic energy of the rods' bonds after the
+// last step, evaluated when asked for (output steps), not every step.
+void FixRodImplicit::refresh_bond_state() {
+  if (bond_state_fresh_) return;
+  double strain = 0.0, energy = 0.0;
+  for (int rod_id : stepped_rods_) {
+    const auto strain_energy = hsrod::bond_strain_and_energy(scratch_by_rod_[rod_id].rod);
+    strain = std::max(strain, strain_energy.first);
+    energy += strain_energy.second;
+  }
+  bond_strain_ = strain;
+  bond_energy_ = energy;
+  bond_state_fresh_ = true;
 }
 
 // A held rod stays where it is, at rest.

@@ -45,8 +45,11 @@ void LAMMPS_NS::update_overdamped_rod(const std::vector<GatheredSphere> &spheres
     rod.external_forces[k] = s.force;
     rod.external_torques[k] = s.torque;
   }
-  // Spheres come sorted by tag (rod_gather.h): a partner's index by bisection.
-  const auto index_of = [&spheres](int tag) {
+  // Spheres come sorted by tag (rod_gather.h): a partner's index is the
+  // next or previous sphere's in a chain, else found by bisection.
+  const auto index_of = [&spheres, n](int tag, int near) {
+    if (near + 1 < n && spheres[near + 1].tag == tag) return near + 1;
+    if (near > 0 && spheres[near - 1].tag == tag) return near - 1;
     const auto it = std::lower_bound(spheres.begin(), spheres.end(), tag,
                                      [](const GatheredSphere &s, int t) { return s.tag < t; });
     return it != spheres.end() && it->tag == tag ? static_cast<int>(it - spheres.begin()) : -1;
@@ -61,7 +64,7 @@ void LAMMPS_NS::update_overdamped_rod(const std::vector<GatheredSphere> &spheres
     const std::vector<GatheredBond> &stored = spheres[k].bonds;
     for (std::size_t r = 0; r < stored.size(); r++) {
       const GatheredBond &b = stored[r];
-      const int partner = index_of(b.partner_tag);
+      const int partner = index_of(b.partner_tag, k);
       if (partner < 0) continue;  // bonded to another group: not this rod
       // A pair counts once (newton_bond off stores a bond on both spheres):
       // where it is first met in sphere order, then record order.

@@ -56,8 +56,9 @@ void RodGather::gather(int groupbit, const RodBondRecords *bond_fix) {
       mine.push_back(b.rest_rotation.z());
     }
   }
-  allgather_into(world, comm->nprocs, mine, received_, counts_, displs_);
-  const std::vector<double> &all = received_;
+  // On one process the records are already all of them (no MPI copy).
+  if (comm->nprocs > 1) allgather_into(world, comm->nprocs, mine, received_, counts_, displs_);
+  const std::vector<double> &all = comm->nprocs > 1 ? received_ : mine;
   const int total = static_cast<int>(all.size());
 
   // Spheres per rod, then each rod's vector sized to them (its elements,

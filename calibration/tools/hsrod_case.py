@@ -17,7 +17,10 @@ Scene kinds (key "kind"); all quantities in SI units:
                       {"type": "meanVelocity", "U": m/s}, outlet p = 0,
                       no-slip side/top/bottom walls; optional spheres/rod;
                       optional static refinement box around the spheres
-                      (topoSet + refineMesh in Allrun).
+                      ("refine": {"levels", "margin"}) or a given box
+                      ("refine": {"levels", "box": [[x0,y0,z0],[x1,y1,z1]]},
+                      e.g. the band a moving rod sweeps) (topoSet +
+                      refineMesh in Allrun).
   sphereInBox         one sphere at the centre of a box with the exact Stokes
                       velocity on all faces (no wall correction), creeping flow.
   slitBody            a straight row of spheres (rigid rod, pair) at the
@@ -409,7 +412,7 @@ def write_pore_block_mesh(case, L, W, H, xc, R, h):
     return 2 * (n_up + n_rad + 2 * n_t + n_rad + n_dn) * n_half * nz  # rough cell count
 
 
-def write_liggghts_input(case, L, W, H, spheres, dem, rod=None):
+def write_liggghts_input(case, L, W, H, spheres, dem, rod=None, pore=None):
     """LIGGGHTS input for the coupled mode (SI units), walls as wall/gran
     primitives, fix couple/cfd (mpi) and the force fix of the exchange:
       - exchange "explicit": fix couple/cfd/force (load held per interval);
@@ -442,6 +445,12 @@ def write_liggghts_input(case, L, W, H, spheres, dem, rod=None):
     for wall, pos in (("zplane", 0), ("zplane", H), ("yplane", 0), ("yplane", W)):
         lines.append("fix w%s%d all wall/gran model hertz tangential history primitive type 1 %s %.12g"
                      % (wall[0], 0 if pos == 0 else 1, wall, pos))
+    if pore:
+        # the pore cylinders are DEM walls too, so a rod that touches them is stopped there
+        xc = pore.get("x", 0.5 * L)
+        for k, yc in enumerate((0.0, W)):
+            lines.append("fix wp%d all wall/gran model hertz tangential history primitive type 1 zcylinder %.12g %.12g %.12g"
+                         % (k, pore["R"], xc, yc))
     if bonded:
         # create_rod: angle from the y axis, end 1 - end 2 along (sin a, cos a);
         # the generator's rod has sphere 1 at centre - (n-1)/2 d (cos b, sin b)
@@ -504,7 +513,7 @@ def make_channel(scene, case):
     dem = scene.get("dem")
     if dem:
         # coupled mode: LIGGGHTS moves the spheres; one CFD step = one coupling interval
-        write_liggghts_input(case, L, W, H, spheres, dem, scene.get("rod"))
+        write_liggghts_input(case, L, W, H, spheres, dem, scene.get("rod"), pore)
         ib = dict(ib, motion="coupled", demInput="in.liggghts", couplingInterval=dem["coupling_interval"],
                   rhoParticle=dem["rho_p"], exchange=dem.get("exchange", "semiImplicit"))
         for key, name in (("virtual_mass_coeff", "virtualMassCoeff"), ("drag_factor", "dragFactor")):
@@ -517,7 +526,10 @@ def make_channel(scene, case):
     write_constant(case, dict(fl, creeping=ctl.get("creeping", False)), spheres, ib)
     write_system(case, ctl, ctl.get("steady", True), has_pref=False, n_nonorth=1 if pore else 0)
     refine = scene.get("refine")
-    if refine and spheres:
+    if refine and "box" in refine:
+        # a fixed box (e.g. the band a moving rod sweeps), [[x0,y0,z0],[x1,y1,z1]]
+        write_refinement(case, refine["box"][0], refine["box"][1])
+    elif refine and spheres:
         lo = [min(s["x"][k] - 0.5 * s["d"] for s in spheres) - refine["margin"] for k in range(3)]
         hi = [max(s["x"][k] + 0.5 * s["d"] for s in spheres) + refine["margin"] for k in range(3)]
         write_refinement(case, lo, hi)

@@ -12,7 +12,7 @@ and hsrod. Steps:
      as create_rod + fix rod/bonds in the coupled LIGGGHTS), run under
      nice -n 10; its rodMeasures.csv becomes resolved.csv, its cost
      resolved_run.json. Skipped when resolved.csv exists (--rerun-resolved
-     forces it; ~15 min CPU on one core of the reference machine).
+     forces it; ~14 min CPU on one core: 762 s for 226 of its 240 intervals).
   2. reduced: in.passage with model isotropic / local / nonlocal / twoway
      (levels 1-4) -> level<k>_<model>.csv, CPU and wall time of each run.
   3. comparison: measures along x (resolved vs levels 1-4) -> passage.png,
@@ -60,9 +60,22 @@ def run_resolved(build, work):
     env = dict(os.environ, RODIBFOAM=os.path.join(build, "calibration", "rodIbFoam"))
     env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
     rc, cpu, wall = timed(["nice", "-n", "10", os.path.join(case, "Allrun")], case, env)
-    log = open(os.path.join(case, "log.rodIbFoam")).read()
     if rc != 0:
-        sys.exit("resolved run failed (%s):\n%s" % (case, log[-3000:]))
+        sys.exit("resolved run failed (%s):\n%s" % (case, open(os.path.join(case, "log.rodIbFoam")).read()[-3000:]))
+    collect_resolved(case, cpu, wall, "complete")
+
+
+def collect_resolved(case, cpu=None, wall=None, state="complete"):
+    """resolved.csv, resolved_rodMeasures_raw.csv and resolved_run.json from
+    a case; without measured times (a case collected afterwards, e.g. one
+    stopped once the rod had left the pore) the solver's own last
+    ExecutionTime / ClockTime are used."""
+    log = open(os.path.join(case, "log.rodIbFoam")).read()
+    if cpu is None:
+        last = re.findall(r"ExecutionTime = ([0-9.eE+-]+) s", log)
+        cpu = float(last[-1]) if last else float("nan")
+        wall = os.path.getmtime(os.path.join(case, "log.rodIbFoam")) - os.path.getmtime(
+            os.path.join(case, "log.blockMesh"))
     raw = os.path.join(case, "postProcessing", "rodIbFoam", "rodMeasures.csv")
     shutil.copy(raw, os.path.join(HERE, "resolved_rodMeasures_raw.csv"))
     rows = pm.read_run(raw)
@@ -75,13 +88,15 @@ def run_resolved(build, work):
         a, b = rows[max(0, i - 1)], rows[min(len(rows) - 1, i + 1)]
         r["vx_over_U"] = (b["x_com"] - a["x_com"]) / (b["t"] - a["t"]) / U
     pm.write_run(os.path.join(HERE, "resolved.csv"), rows)
-    report = [l.strip() for l in log.splitlines() if re.search(
-        r"cells per diameter|Courant|coupling|exchange|virtual mass|Re_p|estimated cost|cells ", l)][:20]
+    head = log.split("Starting time loop")[0]
+    report = [l.strip() for l in head.splitlines()[-40:] if l.startswith("  ") or "coupled to" in l
+              or "momentum exchange" in l]
     cells = re.search(r"cells (\d+)", log)
     meta = {"cpu_s": round(cpu, 1), "wall_s": round(wall, 1), "cells": int(cells.group(1)) if cells else None,
             "coupling_intervals": len(rows) - 1, "report": report,
-            "solver": env["RODIBFOAM"], "note": "CPU: blockMesh + topoSet + refineMesh + rodIbFoam with "
-            "its coupled LIGGGHTS, one core, nice -n 10, machine shared with other jobs"}
+            "state": state, "t_end_s": rows[-1]["t"], "x_end_m": rows[-1]["x_com"],
+            "note": "CPU: rodIbFoam with its coupled LIGGGHTS (+ blockMesh, topoSet, refineMesh when run by "
+            "run.py), one core, nice -n 10, machine shared with other jobs (load ~13 on 2 cores)"}
     with open(os.path.join(HERE, "resolved_run.json"), "w") as f:
         json.dump(meta, f, indent=1)
     print("resolved: %d intervals, %.0f s CPU, %.0f s wall" % (len(rows) - 1, cpu, wall))
@@ -171,10 +186,15 @@ def main():
     ap.add_argument("--work", default="/tmp/hsrod_pore_passage")
     ap.add_argument("--rerun-resolved", action="store_true")
     ap.add_argument("--resolved-only", action="store_true", help="stop after the resolved run")
+    ap.add_argument("--collect-resolved", metavar="CASE", help="take the resolved record from this (finished "
+                    "or stopped) case instead of running it")
+    ap.add_argument("--stopped", action="store_true", help="with --collect-resolved: the case was stopped early")
     a = ap.parse_args()
     build = os.path.abspath(a.build)
     os.makedirs(a.work, exist_ok=True)
-    if a.rerun_resolved or not os.path.exists(os.path.join(HERE, "resolved.csv")):
+    if a.collect_resolved:
+        collect_resolved(a.collect_resolved, state="stopped early" if a.stopped else "complete")
+    elif a.rerun_resolved or not os.path.exists(os.path.join(HERE, "resolved.csv")):
         run_resolved(build, a.work)
     else:
         print("resolved: recorded resolved.csv used (--rerun-resolved to recompute)")

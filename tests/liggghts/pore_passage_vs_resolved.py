@@ -41,7 +41,7 @@ def wobble(rows, col):
 
 
 def main():
-    hsrod = sys.argv[1]
+    hsrod = os.path.abspath(sys.argv[1])
     ref = pm.read_run(os.path.join(PASSAGE, "resolved.csv"))
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "auto.csv")

@@ -98,20 +98,25 @@ def summary(rows, sc=None):
     }
 
 
-def errors_along_x(run, ref, d):
+def errors_along_x(run, ref, d, passage=None):
     """Errors of a run against the reference along the common x range
     (measures at equal rod-centre x) and of x(t) at equal time:
     max |dx|/d at equal t, rms and max |d(v_x/U)|, max |d angle| [deg],
-    max |d lateral/W|, max |d deflection|."""
+    max |d lateral/W|, max |d deflection|; with passage = (x0, x1) also the
+    rms and max |d(v_x/U)| over x0..x1 only (dvx_rms_passage, dvx_max_passage:
+    the passage without the resolved run's start-up)."""
     a, b = monotone_in_x(run), monotone_in_x(ref)
     xa = [r["x_com"] for r in a]
     lo, hi = max(xa[0], b[0]["x_com"]), min(xa[-1], b[-1]["x_com"])
     out = {"dx_over_d_max": 0.0, "dvx_rms": 0.0, "dvx_max": 0.0, "dangle_max": 0.0,
            "dlateral_max": 0.0, "ddefl_max": 0.0}
-    n = 0
+    n, n_p, sq_p, max_p = 0, 0, 0.0, 0.0
     for r in b:
         if not (lo <= r["x_com"] <= hi):
             continue
+        if passage and passage[0] <= r["x_com"] <= passage[1]:
+            dv = interp(xa, [s["vx_over_U"] for s in a], r["x_com"]) - r["vx_over_U"]
+            n_p, sq_p, max_p = n_p + 1, sq_p + dv * dv, max(max_p, abs(dv))
         for key, col in (("dvx_max", "vx_over_U"), ("dangle_max", "angle_deg"),
                          ("dlateral_max", "lateral_over_W"), ("ddefl_max", "deflection")):
             v = interp(xa, [s[col] for s in a], r["x_com"])
@@ -120,6 +125,8 @@ def errors_along_x(run, ref, d):
                 out["dvx_rms"] += (v - r[col]) ** 2
                 n += 1
     out["dvx_rms"] = math.sqrt(out["dvx_rms"] / max(1, n))
+    if passage:
+        out["dvx_rms_passage"], out["dvx_max_passage"] = math.sqrt(sq_p / max(1, n_p)), max_p
     ta = [r["t"] for r in run]
     for r in ref:
         x = interp(ta, [s["x_com"] for s in run], r["t"])

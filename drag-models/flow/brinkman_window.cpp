@@ -10,21 +10,74 @@
 
 namespace hsrod {
 
+namespace {
+// Fractional index of x among faces (uniform: first + i h); beyond the ends
+// continued with the end cell's size.
+double fractional_index(double x, int cells, double first, double h, const std::vector<double>& faces) {
+  if (faces.empty()) return (x - first) / h;
+  if (x <= faces.front()) return (x - faces[0]) / (faces[1] - faces[0]);
+  if (x >= faces.back()) return cells + (x - faces[cells]) / (faces[cells] - faces[cells - 1]);
+  const int i = static_cast<int>(std::upper_bound(faces.begin(), faces.end(), x) - faces.begin()) - 1;
+  return i + (x - faces[i]) / (faces[i + 1] - faces[i]);
+}
+
+}  // namespace
+
+double WindowLattice::x_face_index(double x) const { return fractional_index(x, nx, x0, h, x_faces); }
+double WindowLattice::y_face_index(double y) const { return fractional_index(y, ny, y0, h, y_faces); }
+double WindowLattice::x_centre_index(double x) const {
+  // Between centres i and i + 1 (a distance (dx(i) + dx(i+1)) / 2 apart) the
+  // index is linear in x; beyond the first/last centre, linear to the edge.
+  if (x_faces.empty()) return (x - x0) / h - 0.5;
+  const double f = x_face_index(x);
+  int i = static_cast<int>(std::floor(f - 0.5));
+  if (i < 0) return -0.5 + (x - x0) / dx(0);
+  if (i >= nx - 1) return nx - 1 + (x - x_centre(nx - 1)) / dx(nx - 1);
+  return i + (x - x_centre(i)) / (x_centre(i + 1) - x_centre(i));
+}
+double WindowLattice::y_centre_index(double y) const {
+  if (y_faces.empty()) return (y - y0) / h - 0.5;
+  const double f = y_face_index(y);
+  int j = static_cast<int>(std::floor(f - 0.5));
+  if (j < 0) return -0.5 + (y - y0) / dy(0);
+  if (j >= ny - 1) return ny - 1 + (y - y_centre(ny - 1)) / dy(ny - 1);
+  return j + (y - y_centre(j)) / (y_centre(j + 1) - y_centre(j));
+}
+
+WindowLattice WindowLattice::shifted(double dx_, double dy_) const {
+  WindowLattice moved(*this);
+  moved.x0 += dx_;
+  moved.y0 += dy_;
+  for (double& x : moved.x_faces) x += dx_;
+  for (double& y : moved.y_faces) y += dy_;
+  return moved;
+}
+
 BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLattice& lattice,
                                double viscosity)
     : lattice_(lattice), gap_height_(geometry.gap_height()), viscosity_(viscosity) {
   const WindowLattice& g = lattice_;
   if (g.nx < 3 || g.ny < 3 || !(g.h > 0.0))
     throw std::invalid_argument("BrinkmanWindow: need at least 3 x 3 cells of positive size");
+  if ((!g.x_faces.empty() && static_cast<int>(g.x_faces.size()) != g.nx + 1) ||
+      (!g.y_faces.empty() && static_cast<int>(g.y_faces.size()) != g.ny + 1))
+    throw std::invalid_argument("BrinkmanWindow: graded lattice needs nx + 1 x faces and ny + 1 y faces");
+  for (int i = 0; i < g.nx; ++i)
+    if (!(g.dx(i) > 0.0)) throw std::invalid_argument("BrinkmanWindow: x faces must increase");
+  for (int j = 0; j < g.ny; ++j)
+    if (!(g.dy(j) > 0.0)) throw std::invalid_argument("BrinkmanWindow: y faces must increase");
   if (!(viscosity > 0.0)) throw std::invalid_argument("BrinkmanWindow: viscosity must be > 0 Pa s");
-  const double h = g.h, eta = h / gap_height_;  // cell size [m] and [H]
-  const double eps = 1e-6 * h;
-  auto fluid = [&](const Eigen::Vector2d& p) { return geometry.signed_distance(p.x(), p.y()) > eps; };
+  const double H = gap_height_;
+  auto fluid = [&](const Eigen::Vector2d& p) {
+    return geometry.signed_distance(p.x(), p.y()) > 1e-6 * g.h;
+  };
   auto u_at = [&](int i, int j) { return i * g.ny + j; };        // (nx+1) x ny
   auto v_at = [&](int i, int j) { return i * (g.ny + 1) + j; };  // nx x (ny+1)
   auto cell_at = [&](int i, int j) { return i * g.ny + j; };
 
   // Velocity unknowns: interior fluid nodes (the window edges carry u' = 0).
+  // Control area of a node: the spacing to its neighbours' midpoints.
+  std::vector<double> scale;
   u_unknown_.assign((g.nx + 1) * g.ny, -1);
   v_unknown_.assign(g.nx * (g.ny + 1), -1);
   for (int i = 1; i < g.nx; ++i)
@@ -32,6 +85,7 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
       if (fluid(g.u_position(i, j))) {
         u_unknown_[u_at(i, j)] = unknowns_;
         nodes_.push_back({g.u_position(i, j), 0, unknowns_++});
+        scale.push_back(H / (viscosity * (g.x_centre(i) - g.x_centre(i - 1)) * g.dy(j)));
       } else {
         has_walls_ = true;
       }
@@ -40,10 +94,12 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
       if (fluid(g.v_position(i, j))) {
         v_unknown_[v_at(i, j)] = unknowns_;
         nodes_.push_back({g.v_position(i, j), 1, unknowns_++});
+        scale.push_back(H / (viscosity * g.dx(i) * (g.y_centre(j) - g.y_centre(j - 1))));
       } else {
         has_walls_ = true;
       }
   if (unknowns_ == 0) throw std::invalid_argument("BrinkmanWindow: the window holds no fluid");
+  force_scale_ = Eigen::Map<const Eigen::VectorXd>(scale.data(), unknowns_);
 
   // Pressure cells: those with an open face.
   std::vector<int> pressure(g.nx * g.ny, -1);
@@ -56,7 +112,11 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
 
   std::vector<Eigen::Triplet<double>> t;
   t.reserve(static_cast<std::size_t>(n) * 7);
-  // Momentum rows: -lap(u) + 12 u + grad p (lengths in H).
+  // Momentum rows: -lap(u) + 12 u + grad p (lengths in H). Along each
+  // axis the neighbours lie at the node spacings (unequal on a graded
+  // lattice: the three-point second difference of line_stencils.h), or at
+  // a wall crossing closer than that (Shortley-Weller), or at the window
+  // edge half a cell away (for the component parallel to the edge).
   auto momentum = [&](int row, const Eigen::Vector2d& p, int comp, int i, int j) {
     double diag = 12.0;
     for (int axis = 0; axis < 2; ++axis) {
@@ -65,24 +125,33 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
       for (int side = 0; side < 2; ++side) {
         const int s = side == 0 ? -1 : 1;
         const Eigen::Vector2d dir = axis == 0 ? Eigen::Vector2d(s, 0) : Eigen::Vector2d(0, s);
-        const double wall = geometry.ray_distance_to_wall(p, dir, h);
+        const int ni = i + (axis == 0 ? s : 0), nj = j + (axis == 1 ? s : 0);
+        // Distance to the neighbouring node along this line, or to the edge.
+        bool edge = false;
+        double spacing;
+        if (comp == 0) {
+          if (axis == 0) spacing = s < 0 ? g.dx(i - 1) : g.dx(i);  // u nodes on x faces 1..nx-1
+          else if (nj < 0 || nj >= g.ny) edge = true, spacing = 0.5 * g.dy(j);
+          else spacing = std::abs(g.y_centre(nj) - g.y_centre(j));
+        } else {
+          if (axis == 1) spacing = s < 0 ? g.dy(j - 1) : g.dy(j);
+          else if (ni < 0 || ni >= g.nx) edge = true, spacing = 0.5 * g.dx(i);
+          else spacing = std::abs(g.x_centre(ni) - g.x_centre(i));
+        }
         nb[side] = -1;
-        dist[side] = h;
-        if (wall <= h) {
+        dist[side] = spacing;
+        // A wall just beyond the window edge (within a cell) still counts.
+        const double reach = edge ? 2.0 * spacing : spacing;
+        const double wall = geometry.ray_distance_to_wall(p, dir, reach);
+        if (wall <= reach) {
           has_walls_ = true;
-          dist[side] = std::max(wall, kMinWallFraction * h);
+          dist[side] = std::max(wall, kMinWallFraction * reach);
           continue;
         }
-        const int ni = i + (axis == 0 ? s : 0), nj = j + (axis == 1 ? s : 0);
-        if (comp == 0) {
-          if (nj < 0 || nj >= g.ny) dist[side] = 0.5 * h;  // window edge between nodes
-          else nb[side] = u_unknown_[u_at(ni, nj)];
-        } else {
-          if (ni < 0 || ni >= g.nx) dist[side] = 0.5 * h;
-          else nb[side] = v_unknown_[v_at(ni, nj)];
-        }
+        if (edge) continue;
+        nb[side] = comp == 0 ? u_unknown_[u_at(ni, nj)] : v_unknown_[v_at(ni, nj)];
       }
-      const LineWeights w = second_difference(dist[0] / gap_height_, dist[1] / gap_height_);
+      const LineWeights w = second_difference(dist[0] / H, dist[1] / H);
       diag -= w.self;
       if (nb[0] >= 0) t.emplace_back(row, nb[0], -w.minus);
       if (nb[1] >= 0) t.emplace_back(row, nb[1], -w.plus);
@@ -94,16 +163,18 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
       const int r = u_unknown_[u_at(i, j)];
       if (r < 0) continue;
       momentum(r, g.u_position(i, j), 0, i, j);
-      t.emplace_back(r, pressure[cell_at(i, j)], 1.0 / eta);
-      t.emplace_back(r, pressure[cell_at(i - 1, j)], -1.0 / eta);
+      const double inv = H / (g.x_centre(i) - g.x_centre(i - 1));
+      t.emplace_back(r, pressure[cell_at(i, j)], inv);
+      t.emplace_back(r, pressure[cell_at(i - 1, j)], -inv);
     }
   for (int i = 0; i < g.nx; ++i)
     for (int j = 1; j < g.ny; ++j) {
       const int r = v_unknown_[v_at(i, j)];
       if (r < 0) continue;
       momentum(r, g.v_position(i, j), 1, i, j);
-      t.emplace_back(r, pressure[cell_at(i, j)], 1.0 / eta);
-      t.emplace_back(r, pressure[cell_at(i, j - 1)], -1.0 / eta);
+      const double inv = H / (g.y_centre(j) - g.y_centre(j - 1));
+      t.emplace_back(r, pressure[cell_at(i, j)], inv);
+      t.emplace_back(r, pressure[cell_at(i, j - 1)], -inv);
     }
 
   // Continuity (-div u' = 0), except one cell per closed fluid region, where
@@ -122,11 +193,15 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
       const int e = u_unknown_[u_at(i + 1, j)], w = u_unknown_[u_at(i, j)];
       const int no = v_unknown_[v_at(i, j + 1)], so = v_unknown_[v_at(i, j)];
       if (c != c0) {
+        // Scaled by the cell area / h^2 (for a uniform lattice the rows of
+        // the unscaled operator), so that the rows of coarse cells do not
+        // dwarf the fine ones.
         const int r = pressure[c];
-        if (e >= 0) t.emplace_back(r, e, -1.0 / eta);
-        if (w >= 0) t.emplace_back(r, w, 1.0 / eta);
-        if (no >= 0) t.emplace_back(r, no, -1.0 / eta);
-        if (so >= 0) t.emplace_back(r, so, 1.0 / eta);
+        const double ax = H * g.dy(j) / (g.h * g.h), ay = H * g.dx(i) / (g.h * g.h);
+        if (e >= 0) t.emplace_back(r, e, -ax);
+        if (w >= 0) t.emplace_back(r, w, ax);
+        if (no >= 0) t.emplace_back(r, no, -ay);
+        if (so >= 0) t.emplace_back(r, so, ay);
       }
       auto visit = [&](bool open, int ni, int nj) {
         if (!open) return;
@@ -155,11 +230,10 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
   pressure_unknown_ = std::move(pressure);
 }
 
-BrinkmanWindow BrinkmanWindow::translated(double dx, double dy) const {
-  if (has_walls_) throw std::logic_error("BrinkmanWindow::translated: the window has walls");
+BrinkmanWindow BrinkmanWindow::translated(double dx, double dy, bool walls_move_along) const {
+  if (has_walls_ && !walls_move_along) throw std::logic_error("BrinkmanWindow::translated: the window has walls");
   BrinkmanWindow moved(*this);
-  moved.lattice_.x0 += dx;
-  moved.lattice_.y0 += dy;
+  moved.lattice_ = lattice_.shifted(dx, dy);
   for (WindowNode& node : moved.nodes_) node.position += Eigen::Vector2d(dx, dy);
   return moved;
 }
@@ -167,11 +241,12 @@ BrinkmanWindow BrinkmanWindow::translated(double dx, double dy) const {
 std::vector<int> BrinkmanWindow::nodes_near(const Eigen::Vector2d& centre, double radius, int component) const {
   // Lattice range that can hold such nodes, then the unknowns within radius.
   const WindowLattice& g = lattice_;
-  const double ox = component == 0 ? 0.0 : 0.5, oy = component == 0 ? 0.5 : 0.0;
-  const int i_lo = std::max(0, static_cast<int>(std::floor((centre.x() - radius - g.x0) / g.h - ox)));
-  const int i_hi = std::min(g.nx, static_cast<int>(std::ceil((centre.x() + radius - g.x0) / g.h - ox)));
-  const int j_lo = std::max(0, static_cast<int>(std::floor((centre.y() - radius - g.y0) / g.h - oy)));
-  const int j_hi = std::min(g.ny, static_cast<int>(std::ceil((centre.y() + radius - g.y0) / g.h - oy)));
+  auto x_index = [&](double x) { return component == 0 ? g.x_face_index(x) : g.x_centre_index(x); };
+  auto y_index = [&](double y) { return component == 0 ? g.y_centre_index(y) : g.y_face_index(y); };
+  const int i_lo = std::max(0, static_cast<int>(std::floor(x_index(centre.x() - radius))));
+  const int i_hi = std::min(g.nx, static_cast<int>(std::ceil(x_index(centre.x() + radius))));
+  const int j_lo = std::max(0, static_cast<int>(std::floor(y_index(centre.y() - radius))));
+  const int j_hi = std::min(g.ny, static_cast<int>(std::ceil(y_index(centre.y() + radius))));
   std::vector<int> found;
   for (int i = i_lo; i <= i_hi; ++i)
     for (int j = j_lo; j <= j_hi; ++j) {
@@ -187,10 +262,9 @@ Eigen::MatrixXd BrinkmanWindow::solve(const Eigen::MatrixXd& node_forces) const 
   if (node_forces.rows() != unknowns_)
     throw std::invalid_argument("BrinkmanWindow::solve: expected " + std::to_string(unknowns_) + " rows");
   const int n = static_cast<int>(lu_->rows());
-  // Force per node -> force density F / (H h^2), scaled by H^2 / mu.
-  const double scale = gap_height_ / (viscosity_ * lattice_.h * lattice_.h);
+  // Force per node -> force density F / (H A), scaled by H^2 / mu.
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, node_forces.cols());
-  rhs.topRows(unknowns_) = scale * node_forces;
+  rhs.topRows(unknowns_) = force_scale_.asDiagonal() * node_forces;
   const Eigen::MatrixXd x = lu_->solve(rhs);
   return x.topRows(unknowns_);
 }
@@ -213,9 +287,8 @@ Eigen::VectorXd BrinkmanWindow::solve_with_pressure(const Eigen::VectorXd& node_
     throw std::invalid_argument("BrinkmanWindow::solve_with_pressure: expected " + std::to_string(unknowns_) +
                                 " forces");
   const int n = static_cast<int>(lu_->rows());
-  const double scale = gap_height_ / (viscosity_ * lattice_.h * lattice_.h);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
-  rhs.head(unknowns_) = scale * node_forces;
+  rhs.head(unknowns_) = force_scale_.asDiagonal() * node_forces;
   const Eigen::VectorXd x = lu_->solve(rhs);
   // The unknowns are p* = p H / mu (lengths in H, momentum rows times H^2 / mu).
   const double to_pascal = viscosity_ / gap_height_;

@@ -26,17 +26,41 @@
 
 namespace hsrod {
 
-// A window of the planform: nx x ny square cells of size h [m], lower left
-// corner (x0, y0) [m]. Nodes as in mac_grid.h: u(i, j) at (x0 + i h,
-// y0 + (j + 1/2) h), v(i, j) at (x0 + (i + 1/2) h, y0 + j h).
+// A window of the planform: nx x ny cells, lower left corner (x0, y0) [m].
+// Uniform (x_faces, y_faces empty): square cells of size h [m]. Graded:
+// cell faces at x_faces[0..nx], y_faces[0..ny] [m] (increasing, first =
+// x0, y0), e.g. cells of size h near the rod growing geometrically towards
+// the window's edges (hydro/twoway_window_model.h); h is then the finest
+// cell. Nodes as in mac_grid.h: u(i, j) at (x face i, y centre j), v(i, j)
+// at (x centre i, y face j).
 struct WindowLattice {
   double x0 = 0.0, y0 = 0.0;  // m
   double h = 0.0;             // m
   int nx = 0, ny = 0;
-  Eigen::Vector2d u_position(int i, int j) const { return {x0 + i * h, y0 + (j + 0.5) * h}; }
-  Eigen::Vector2d v_position(int i, int j) const { return {x0 + (i + 0.5) * h, y0 + j * h}; }
+  std::vector<double> x_faces, y_faces;  // m; empty: uniform
+  bool graded() const { return !x_faces.empty() || !y_faces.empty(); }
+  double x_face(int i) const { return x_faces.empty() ? x0 + i * h : x_faces[i]; }
+  double y_face(int j) const { return y_faces.empty() ? y0 + j * h : y_faces[j]; }
+  double x_centre(int i) const { return 0.5 * (x_face(i) + x_face(i + 1)); }
+  double y_centre(int j) const { return 0.5 * (y_face(j) + y_face(j + 1)); }
+  double dx(int i) const { return x_face(i + 1) - x_face(i); }  // cell width [m]
+  double dy(int j) const { return y_face(j + 1) - y_face(j); }
+  double x1() const { return x_face(nx); }  // upper corner [m]
+  double y1() const { return y_face(ny); }
+  Eigen::Vector2d u_position(int i, int j) const { return {x_face(i), y_centre(j)}; }
+  Eigen::Vector2d v_position(int i, int j) const { return {x_centre(i), y_face(j)}; }
+  // Fractional index of x [m] among the x faces (i at face i, linear in
+  // between; beyond the window, continued with the edge cell), and among the
+  // cell centres (i at centre i; -1/2 and nx - 1/2 at the window edges).
+  double x_face_index(double x) const;
+  double y_face_index(double y) const;
+  double x_centre_index(double x) const;
+  double y_centre_index(double y) const;
+  // The same lattice moved by (dx, dy) [m].
+  WindowLattice shifted(double dx, double dy) const;
   bool operator==(const WindowLattice& o) const {
-    return x0 == o.x0 && y0 == o.y0 && h == o.h && nx == o.nx && ny == o.ny;
+    return x0 == o.x0 && y0 == o.y0 && h == o.h && nx == o.nx && ny == o.ny && x_faces == o.x_faces &&
+           y_faces == o.y_faces;
   }
 };
 
@@ -68,12 +92,15 @@ class BrinkmanWindow {
   bool has_walls() const { return has_walls_; }
   // This window moved by (dx, dy) [m], sharing the factorisation. Only for
   // windows without walls (std::logic_error otherwise), and the caller must
-  // know the translated window is wall-free too.
-  BrinkmanWindow translated(double dx, double dy) const;
+  // know the translated window is wall-free too; with `walls_move_along`
+  // the caller states that the walls are the same relative to the moved
+  // window (a straight channel's side walls for a move along x).
+  BrinkmanWindow translated(double dx, double dy, bool walls_move_along = false) const;
 
   // Disturbance velocities [m/s] at all nodes() for each column of
   // `node_forces`: the force [N] applied to the fluid at each node (rows as
-  // nodes()), spread uniformly over the node's cell area and the gap height.
+  // nodes()), spread uniformly over the node's control area (the cell
+  // spacings around it) and the gap height.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& node_forces) const;
 
   // Read access for field output (flow/window_flow_field.h).
@@ -83,8 +110,8 @@ class BrinkmanWindow {
   int u_unknown(int i, int j) const;
   int v_unknown(int i, int j) const;
   // As solve() for one force column, also returning the disturbance pressure
-  // p' [Pa] per cell (index i * ny + j, centre (x0 + (i + 1/2) h,
-  // y0 + (j + 1/2) h)), NaN in cells without an open face. p' is fixed to 0
+  // p' [Pa] per cell (index i * ny + j, centre (x_centre(i),
+  // y_centre(j))), NaN in cells without an open face. p' is fixed to 0
   // at the first such cell of each closed fluid region (the system's
   // gauge).
   Eigen::VectorXd solve_with_pressure(const Eigen::VectorXd& node_forces, std::vector<double>& cell_pressure) const;
@@ -96,6 +123,7 @@ class BrinkmanWindow {
   std::vector<WindowNode> nodes_;
   std::vector<int> u_unknown_, v_unknown_;  // per lattice node, -1 if not fluid
   std::vector<int> pressure_unknown_;        // per cell (i * ny + j), -1 without an open face
+  Eigen::VectorXd force_scale_;          // per unknown: H / (mu A), A its control area [m/(N s)]
   int unknowns_ = 0;
   bool has_walls_ = false;
   // Sparse LU (SuiteSparse KLU): about 2x faster to factorise and 4x faster

@@ -75,7 +75,7 @@ WindowFlowField::WindowFlowField(const BrinkmanWindow& window, const Eigen::Vect
   // The most upstream section x = x0 + i h that has no fluid outside the
   // window's y range (sampled every h / 4 towards the side walls).
   closed_section_x_ = std::numeric_limits<double>::quiet_NaN();
-  const double y1 = g.y0 + g.ny * g.h, step = 0.25 * g.h;
+  const double y1 = g.y1(), step = 0.25 * g.h;
   auto fluid_outside = [&](double x) {
     for (double y = geometry.y_lo() + 0.5 * step; y < g.y0; y += step)
       if (geometry.signed_distance(x, y) > 0.0) return true;
@@ -84,15 +84,15 @@ WindowFlowField::WindowFlowField(const BrinkmanWindow& window, const Eigen::Vect
     return false;
   };
   for (int i = 0; i <= g.nx; ++i)
-    if (!fluid_outside(g.x0 + i * g.h)) {
-      closed_section_x_ = g.x0 + i * g.h;
+    if (!fluid_outside(g.x_face(i))) {
+      closed_section_x_ = g.x_face(i);
       break;
     }
 }
 
 bool WindowFlowField::covers(double x, double y) const {
   const WindowLattice& g = lattice_;
-  return x >= g.x0 && x <= g.x0 + g.nx * g.h && y >= g.y0 && y <= g.y0 + g.ny * g.h;
+  return x >= g.x0 && x <= g.x1() && y >= g.y0 && y <= g.y1();
 }
 
 double WindowFlowField::node_value(int component, int i, int j) const {
@@ -104,10 +104,13 @@ double WindowFlowField::node_value(int component, int i, int j) const {
 Eigen::Vector2d WindowFlowField::velocity(double x, double y) const {
   if (!covers(x, y)) return Eigen::Vector2d::Zero();
   const WindowLattice& g = lattice_;
-  const double s = (x - g.x0) / g.h, t = (y - g.y0) / g.h;
-  // u nodes: x at i h (the edge columns i = 0, nx carry no unknown), y half a cell off the edges.
-  const AxisWeights ux = axis_weights(s, g.nx + 1, false), uy = axis_weights(t - 0.5, g.ny, true);
-  const AxisWeights vx = axis_weights(s - 0.5, g.nx, true), vy = axis_weights(t, g.ny + 1, false);
+  // u nodes: x on the faces (the edge columns i = 0, nx carry no unknown),
+  // y at the cell centres, half a cell off the edges; v nodes the other way
+  // round. Linear in x and y between nodes (graded lattices too).
+  const AxisWeights ux = axis_weights(g.x_face_index(x), g.nx + 1, false);
+  const AxisWeights uy = axis_weights(g.y_centre_index(y), g.ny, true);
+  const AxisWeights vx = axis_weights(g.x_centre_index(x), g.nx, true);
+  const AxisWeights vy = axis_weights(g.y_face_index(y), g.ny + 1, false);
   Eigen::Vector2d u = Eigen::Vector2d::Zero();
   for (int a = 0; a < 2; ++a)
     for (int b = 0; b < 2; ++b) {
@@ -122,8 +125,8 @@ Eigen::Vector2d WindowFlowField::velocity(double x, double y) const {
 double WindowFlowField::pressure(double x, double y) const {
   const WindowLattice& g = lattice_;
   if (!covers(x, y)) return x < closed_section_x_ ? upstream_rise_ : 0.0;  // false for NaN
-  const AxisWeights px = axis_weights((x - g.x0) / g.h - 0.5, g.nx, false);
-  const AxisWeights py = axis_weights((y - g.y0) / g.h - 0.5, g.ny, false);
+  const AxisWeights px = axis_weights(g.x_centre_index(x), g.nx, false);
+  const AxisWeights py = axis_weights(g.y_centre_index(y), g.ny, false);
   double sum = 0.0, total = 0.0;
   for (int a = 0; a < 2; ++a)
     for (int b = 0; b < 2; ++b) {

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -33,39 +34,38 @@ TwoWayWindowModel::TwoWayWindowModel(const HydrodynamicParameters& p, const Conf
   if (options_.margin < 0.0) throw std::invalid_argument("twoway: window margin must be >= 0 m");
   if (options_.update_distance < 0.0) throw std::invalid_argument("twoway: update distance must be >= 0 m");
   if (options_.update_every < 0) throw std::invalid_argument("twoway: update interval must be >= 0 steps");
+  if (options_.fine_margin < 0.0) throw std::invalid_argument("twoway: window fine margin must be >= 0 m");
+  if (!(options_.grading > 1.0) || options_.grading > 2.0)
+    throw std::invalid_argument("twoway: window grading must be in (1, 2]");
+  if (options_.margin > 0.0 && options_.fine_margin > options_.margin)
+    throw std::invalid_argument("twoway: window fine margin must not exceed the window margin");
   const double d = p.sphere_diameter;
   if (options_.update_distance == 0.0) options_.update_distance = 0.5 * d;
   spacing_ = d / options_.cells_per_diameter;
   obstruction_ = LocalDragBase::obstruction_friction();
   film_friction_ = sphere_friction_ - obstruction_;
   free_self_mobility_ = measure_free_self_mobility();
-  if (!(kMidplaneFactor * free_self_mobility_ < 1.0 / obstruction_)) {
-    throw std::invalid_argument(
-        "twoway: the footprint of a sphere on the window grid is more mobile than the sphere allows "
-        "(c m_free = " + std::to_string(kMidplaneFactor * free_self_mobility_) + " >= 1/zeta_o = " +
-        std::to_string(1.0 / obstruction_) + " m/(N s)); refine the grid (cells per diameter)");
-  }
+  // c m_free < 1/zeta_o is not required: the rod's matrix
+  // I/zeta_o + c (M - m_free I) stays positive definite while the spheres'
+  // mutual mobilities stay below 1/(c zeta_o) (checked at each update).
 }
 
 double TwoWayWindowModel::margin_for(double rod_extent) const {
   if (options_.margin > 0.0) return options_.margin;
   const double screening = parameters_.gap_height / std::sqrt(12.0);
-  return std::max({4.0 * screening, 0.5 * rod_extent, 2.0 * parameters_.sphere_diameter});
+  return std::max({kOuterScreenings * screening, kOuterExtents * rod_extent, 2.0 * parameters_.sphere_diameter});
 }
 
-// Self-mobility of one footprint on the lattice in free space (a straight
-// channel far wider than the window), averaged over sub-cell positions and
-// the two in-plane directions.
+// Self-mobility of one footprint on the lattice in free space (a planform
+// far wider than the window), on the window the model places around a lone
+// sphere, averaged over sub-cell positions and the two in-plane directions.
 double TwoWayWindowModel::measure_free_self_mobility() const {
   const double h = spacing_, r = footprint_radius();
   const double half = margin_for(2.0 * r) + r;
-  const int cells = 2 * static_cast<int>(std::ceil(half / h));
-  const double side = 100.0 * cells * h;
+  const double side = 2.0 * h * std::ceil(200.0 * half / h);  // planform corner on the lattice
   const ChannelGeometry open(side, side, parameters_.gap_height, -0.5 * side, -0.5 * side);
-  WindowLattice lattice;
-  lattice.h = h;
-  lattice.nx = lattice.ny = cells;
-  lattice.x0 = lattice.y0 = -0.5 * cells * h;
+  const WindowLattice lattice =
+      window_lattice(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), open, Eigen::Vector2i::Zero());
   const BrinkmanWindow window(open, lattice, parameters_.viscosity);
   double sum = 0.0;
   int samples = 0;
@@ -121,10 +121,8 @@ Eigen::VectorXd TwoWayWindowModel::fluid_node_forces(const BrinkmanWindow& windo
 
 // No wall or obstacle within a cell of the window rectangle (then the window
 // system is that of free space, the same for every such placement).
-bool TwoWayWindowModel::window_clear_of_walls(const WindowLattice& g, const ChannelGeometry& geometry) {
-  const double x0 = g.x0 - g.h, x1 = g.x0 + (g.nx + 1) * g.h;
-  const double y0 = g.y0 - g.h, y1 = g.y0 + (g.ny + 1) * g.h;
-  if (y0 <= geometry.y_lo() || y1 >= geometry.y_hi()) return false;
+bool TwoWayWindowModel::window_clear_of_cylinders(const WindowLattice& g, const ChannelGeometry& geometry) {
+  const double x0 = g.x0 - g.h, x1 = g.x1() + g.h, y0 = g.y0 - g.h, y1 = g.y1() + g.h;
   for (const ZCylinder& c : geometry.cylinders()) {
     const double dx = std::max({x0 - c.center_x, 0.0, c.center_x - x1});
     const double dy = std::max({y0 - c.center_y, 0.0, c.center_y - y1});
@@ -133,31 +131,111 @@ bool TwoWayWindowModel::window_clear_of_walls(const WindowLattice& g, const Chan
   return true;
 }
 
-void TwoWayWindowModel::place_window(const RodGeometry& rod, const ChannelGeometry& geometry, RodState& rod_state,
+bool TwoWayWindowModel::near_side_walls(const WindowLattice& g, const ChannelGeometry& geometry) {
+  return g.y0 - 2.0 * g.dy(0) <= geometry.y_lo() || g.y1() + 2.0 * g.dy(g.ny - 1) >= geometry.y_hi();
+}
+
+namespace {
+// Faces beyond `start` [m] along one direction (sign +-1), cells growing by
+// `ratio` from h, up to `distance` [m] (the last face exactly there; a last
+// cell smaller than half its neighbour is merged into it). Offsets from
+// start, increasing in magnitude.
+std::vector<double> graded_offsets(double distance, double h, double ratio) {
+  std::vector<double> offsets;
+  double size = h, at = 0.0;
+  while (at < distance - 1e-9 * h) {
+    size *= ratio;
+    at += size;
+    offsets.push_back(std::min(at, distance));
+  }
+  const std::size_t k = offsets.size();
+  if (k >= 2 && offsets[k - 1] - offsets[k - 2] < 0.5 * (offsets[k - 2] - (k >= 3 ? offsets[k - 3] : 0.0))) {
+    offsets.erase(offsets.end() - 2);
+  }
+  return offsets;
+}
+
+// Faces of one axis: `fine` uniform cells of size h from `first`, then the
+// graded cells out to `below` [m] before and `above` [m] after them.
+std::vector<double> graded_axis(double first, int fine, double h, double below, double above, double ratio) {
+  std::vector<double> faces;
+  const std::vector<double> lower = graded_offsets(below, h, ratio), upper = graded_offsets(above, h, ratio);
+  for (auto it = lower.rbegin(); it != lower.rend(); ++it) faces.push_back(first - *it);
+  for (int i = 0; i <= fine; ++i) faces.push_back(first + i * h);
+  const double last = first + fine * h;
+  for (double offset : upper) faces.push_back(last + offset);
+  return faces;
+}
+}  // namespace
+
+double TwoWayWindowModel::fine_margin_for(double rod_extent) const {
+  if (options_.fine_margin > 0.0) return std::min(options_.fine_margin, margin_for(rod_extent));
+  const double screening = parameters_.gap_height / std::sqrt(12.0);
+  return std::min(margin_for(rod_extent), std::max(2.0 * screening, 2.0 * parameters_.sphere_diameter));
+}
+
+WindowLattice TwoWayWindowModel::window_lattice(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+                                                const ChannelGeometry& geometry, const Eigen::Vector2i& travel) const {
+  const double r = footprint_radius(), h = spacing_;
+  const double extent = (hi - lo).maxCoeff() + 2.0 * r;
+  const double reach = fine_margin_for(extent) + r, outer = margin_for(extent) + r;
+  // Fine zone anchored at the planform corner, so that windows placed at
+  // different times share their nodes (the footprints vary continuously).
+  // Its size depends on the rod's extent only (not on where it sits on the
+  // lattice), so that wall-free placements of a rod share one system.
+  // Downstream (along `travel`, components -1, 0 or 1) the fine zone
+  // reaches one fine margin further: the rod's way until its next placement.
+  const double ahead = fine_margin_for(extent);
+  const double below_x = reach + (travel.x() < 0 ? ahead : 0.0), above_x = reach + (travel.x() > 0 ? ahead : 0.0);
+  const double below_y = reach + (travel.y() < 0 ? ahead : 0.0), above_y = reach + (travel.y() > 0 ? ahead : 0.0);
+  const long i0 = static_cast<long>(std::floor((lo.x() - below_x - geometry.x_lo()) / h));
+  const long i1 = i0 + 1 + static_cast<long>(std::ceil((hi.x() - lo.x() + below_x + above_x) / h));
+  long j0 = static_cast<long>(std::floor((lo.y() - below_y - geometry.y_lo()) / h));
+  long j1 = j0 + 1 + static_cast<long>(std::ceil((hi.y() - lo.y() + below_y + above_y) / h));
+  j0 = std::max(j0, 0L);  // no disturbance beyond the side walls
+  j1 = std::min(j1, static_cast<long>(std::ceil(geometry.width() / h)));
+  WindowLattice lattice;
+  lattice.h = h;
+  const double fx0 = geometry.x_lo() + i0 * h, fy0 = geometry.y_lo() + j0 * h;
+  const int fine_x = static_cast<int>(i1 - i0), fine_y = static_cast<int>(j1 - j0);
+  // Graded part: from the fine zone out to `outer` beyond the rod's
+  // footprints, never beyond the side walls.
+  const double grow_x = std::max(0.0, fx0 - (lo.x() - outer));
+  const double grow_x_up = std::max(0.0, hi.x() + outer - (fx0 + fine_x * h));
+  const double grow_y = std::max(0.0, fy0 - std::max(lo.y() - outer, geometry.y_lo()));
+  const double grow_y_up = std::max(0.0, std::min(hi.y() + outer, geometry.y_hi()) - (fy0 + fine_y * h));
+  if (grow_x + grow_x_up + grow_y + grow_y_up < 1e-9 * h) {
+    lattice.x0 = fx0;
+    lattice.y0 = fy0;
+    lattice.nx = fine_x;
+    lattice.ny = fine_y;
+    return lattice;
+  }
+  lattice.x_faces = graded_axis(fx0, fine_x, h, grow_x, grow_x_up, options_.grading);
+  lattice.y_faces = graded_axis(fy0, fine_y, h, grow_y, grow_y_up, options_.grading);
+  lattice.nx = static_cast<int>(lattice.x_faces.size()) - 1;
+  lattice.ny = static_cast<int>(lattice.y_faces.size()) - 1;
+  lattice.x0 = lattice.x_faces.front();
+  lattice.y0 = lattice.y_faces.front();
+  return lattice;
+}
+
+void TwoWayWindowModel::place_window(const RodGeometry& rod, const BackgroundFlow& flow, RodState& rod_state,
                                      TwoWayWindowState& state) const {
+  const ChannelGeometry& geometry = flow.geometry();
   Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
   for (const auto& x : rod.positions) {
     lo = lo.cwiseMin(x.head<2>());
     hi = hi.cwiseMax(x.head<2>());
   }
-  const double r = footprint_radius(), h = spacing_;
-  const double reach = margin_for((hi - lo).maxCoeff() + 2.0 * r) + r;
-  // Lattice anchored at the planform corner, so that windows placed at
-  // different times share their nodes (the footprints vary continuously).
-  // The size depends on the rod's extent only (not on where it sits on the
-  // lattice), so that wall-free placements of a rod share one system.
-  const long i0 = static_cast<long>(std::floor((lo.x() - reach - geometry.x_lo()) / h));
-  const long i1 = i0 + 1 + static_cast<long>(std::ceil((hi.x() - lo.x() + 2.0 * reach) / h));
-  long j0 = static_cast<long>(std::floor((lo.y() - reach - geometry.y_lo()) / h));
-  long j1 = j0 + 1 + static_cast<long>(std::ceil((hi.y() - lo.y() + 2.0 * reach) / h));
-  j0 = std::max(j0, 0L);  // no disturbance beyond the side walls
-  j1 = std::min(j1, static_cast<long>(std::ceil(geometry.width() / h)));
-  WindowLattice lattice;
-  lattice.h = h;
-  lattice.x0 = geometry.x_lo() + i0 * h;
-  lattice.y0 = geometry.y_lo() + j0 * h;
-  lattice.nx = static_cast<int>(i1 - i0);
-  lattice.ny = static_cast<int>(j1 - j0);
+  // The way the rod is carried: the background flow at its centroid, per
+  // axis where that axis carries at least a third of it.
+  const Eigen::Vector2d centre = 0.5 * (lo + hi);
+  const Eigen::Vector2d stream = flow.velocity(centre.x(), centre.y());
+  Eigen::Vector2i travel = Eigen::Vector2i::Zero();
+  for (int a = 0; a < 2; ++a)
+    if (std::abs(stream[a]) > stream.norm() / 3.0) travel[a] = stream[a] > 0.0 ? 1 : -1;
+  const WindowLattice lattice = window_lattice(lo, hi, geometry, travel);
   const long cells = static_cast<long>(lattice.nx) * lattice.ny;
   if (cells > options_.max_window_cells)
     throw std::invalid_argument("twoway: window of " + std::to_string(cells) + " cells exceeds the limit of " +
@@ -166,41 +244,72 @@ void TwoWayWindowModel::place_window(const RodGeometry& rod, const ChannelGeomet
   TwoWayWindowStatistics& stats = state.statistics;
   ++stats.placements;
   stats.last_window_cells = static_cast<int>(cells);
-  const bool clear = window_clear_of_walls(lattice, geometry);
-  const auto cached = state.free_windows.find({lattice.nx, lattice.ny});
   rod_state.placed = lattice;
-  rod_state.translated = clear && cached != state.free_windows.end();
-  if (rod_state.translated) {
+  rod_state.translated = false;
+  // A window that no pore cylinder reaches is the same system as an earlier
+  // one of the same shape moved along x (a straight channel's side walls are
+  // parallel to x), or in any direction if no side wall is in either: its
+  // factorisation is reused.
+  const bool clear = window_clear_of_cylinders(lattice, geometry);
+  const auto cached = state.free_windows.find({lattice.nx, lattice.ny});
+  if (clear && cached != state.free_windows.end()) {
     const WindowLattice& g = cached->second->lattice();
-    rod_state.window =
-        std::make_unique<BrinkmanWindow>(cached->second->translated(lattice.x0 - g.x0, lattice.y0 - g.y0));
-    return;
+    const bool side = near_side_walls(lattice, geometry) || near_side_walls(g, geometry);
+    const WindowLattice moved = g.shifted(lattice.x0 - g.x0, side ? 0.0 : lattice.y0 - g.y0);
+    if (same_cells(moved, lattice)) {
+      rod_state.translated = true;
+      rod_state.placed = moved;
+      rod_state.window = std::make_unique<BrinkmanWindow>(
+          cached->second->translated(moved.x0 - g.x0, moved.y0 - g.y0, cached->second->has_walls()));
+      return;
+    }
   }
   const auto start = std::chrono::steady_clock::now();
   rod_state.window = std::make_unique<BrinkmanWindow>(geometry, lattice, parameters_.viscosity);
   ++stats.factorisations;
   stats.factorisation_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (clear && !rod_state.window->has_walls())
-    state.free_windows[{lattice.nx, lattice.ny}] = std::make_shared<const BrinkmanWindow>(*rod_state.window);
+  if (clear) state.free_windows[{lattice.nx, lattice.ny}] = std::make_shared<const BrinkmanWindow>(*rod_state.window);
+}
+
+bool TwoWayWindowModel::same_cells(const WindowLattice& a, const WindowLattice& b) {
+  if (a.nx != b.nx || a.ny != b.ny || a.h != b.h) return false;
+  const double tolerance = 1e-9 * a.h;
+  for (int i = 0; i <= a.nx; ++i)
+    if (std::abs(a.x_face(i) - b.x_face(i)) > tolerance) return false;
+  for (int j = 0; j <= a.ny; ++j)
+    if (std::abs(a.y_face(j) - b.y_face(j)) > tolerance) return false;
+  return true;
+}
+
+// The uniform part of a window: its cells of size h (the whole window if uniform).
+void TwoWayWindowModel::fine_zone(const WindowLattice& g, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
+  auto fine = [&](double size) { return std::abs(size - g.h) <= 1e-6 * g.h; };
+  int i0 = 0, i1 = g.nx, j0 = 0, j1 = g.ny;
+  while (i0 < g.nx && !fine(g.dx(i0))) ++i0;
+  while (i1 > i0 && !fine(g.dx(i1 - 1))) --i1;
+  while (j0 < g.ny && !fine(g.dy(j0))) ++j0;
+  while (j1 > j0 && !fine(g.dy(j1 - 1))) --j1;
+  lo = Eigen::Vector2d(g.x_face(i0), g.y_face(j0));
+  hi = Eigen::Vector2d(g.x_face(i1), g.y_face(j1));
 }
 
 // The rod still lies in the inner part of its window: at least half the
 // margin from every edge that is not beyond a side wall.
 bool TwoWayWindowModel::window_holds(const RodGeometry& rod, const ChannelGeometry& geometry,
                                      const BrinkmanWindow& window) const {
-  const WindowLattice& g = window.lattice();
   Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
   for (const auto& x : rod.positions) {
     lo = lo.cwiseMin(x.head<2>());
     hi = hi.cwiseMax(x.head<2>());
   }
-  const double r = footprint_radius();
-  const double keep = 0.5 * margin_for((hi - lo).maxCoeff() + 2.0 * r) + r;
-  const double x1 = g.x0 + g.nx * g.h, y1 = g.y0 + g.ny * g.h;
-  const bool lower_wall = g.y0 <= geometry.y_lo() + 1e-9 * g.h;
-  const bool upper_wall = y1 >= geometry.y_hi() - 1e-9 * g.h;
-  return lo.x() - keep >= g.x0 && hi.x() + keep <= x1 && (lower_wall || lo.y() - keep >= g.y0) &&
-         (upper_wall || hi.y() + keep <= y1);
+  const double r = footprint_radius(), h = spacing_;
+  const double keep = 0.5 * fine_margin_for((hi - lo).maxCoeff() + 2.0 * r) + r;
+  Eigen::Vector2d zone_lo, zone_hi;
+  fine_zone(window.lattice(), zone_lo, zone_hi);
+  const bool lower_wall = zone_lo.y() <= geometry.y_lo() + 1e-9 * h;
+  const bool upper_wall = zone_hi.y() >= geometry.y_hi() - 1e-9 * h;
+  return lo.x() - keep >= zone_lo.x() && hi.x() + keep <= zone_hi.x() && (lower_wall || lo.y() - keep >= zone_lo.y()) &&
+         (upper_wall || hi.y() + keep <= zone_hi.y());
 }
 
 // R_o = (I / zeta_o + c (M - m_free I))^-1 from the window's footprint mobility M.
@@ -263,7 +372,10 @@ std::string TwoWayWindowState::work_summary() const {
 
 namespace {
 void put_lattice(std::vector<double>& out, const WindowLattice& g) {
-  out.insert(out.end(), {g.x0, g.y0, g.h, static_cast<double>(g.nx), static_cast<double>(g.ny)});
+  out.insert(out.end(), {g.x0, g.y0, g.h, static_cast<double>(g.nx), static_cast<double>(g.ny), g.graded() ? 1.0 : 0.0});
+  if (!g.graded()) return;
+  for (int i = 0; i <= g.nx; ++i) out.push_back(g.x_face(i));
+  for (int j = 0; j <= g.ny; ++j) out.push_back(g.y_face(j));
 }
 
 // Reads the restart data back in order; throws on running past its end.
@@ -282,6 +394,12 @@ struct Reader {
     g.h = next();
     g.nx = integer();
     g.ny = integer();
+    if (next() != 0.0) {
+      if (g.nx < 0 || g.ny < 0 || data.size() - at < static_cast<std::size_t>(g.nx) + g.ny + 2)
+        throw std::invalid_argument("twoway: restart data ends early");
+      for (int i = 0; i <= g.nx; ++i) g.x_faces.push_back(next());
+      for (int j = 0; j <= g.ny; ++j) g.y_faces.push_back(next());
+    }
     return g;
   }
 };
@@ -338,8 +456,8 @@ void TwoWayWindowModel::restore_state(ModelState& base, const std::vector<double
     const auto cached = state.free_windows.find({rod.placed.nx, rod.placed.ny});
     if (rod.translated && cached != state.free_windows.end()) {
       const WindowLattice& g = cached->second->lattice();
-      rod.window =
-          std::make_unique<BrinkmanWindow>(cached->second->translated(rod.placed.x0 - g.x0, rod.placed.y0 - g.y0));
+      rod.window = std::make_unique<BrinkmanWindow>(cached->second->translated(
+          rod.placed.x0 - g.x0, rod.placed.y0 - g.y0, cached->second->has_walls()));
     } else {
       rod.window = std::make_unique<BrinkmanWindow>(geometry, rod.placed, parameters_.viscosity);
     }
@@ -388,20 +506,30 @@ void TwoWayWindowModel::evaluate_with(const RodGeometry& rod, const BackgroundFl
     // change of the rod's shape or orientation (sphere displacements
     // relative to the centroid's) calls for a new solve (measured on the pore
     // passage: x changes by 0.13 d, within the grid's sub-cell noise of
-    // 0.1-0.3 % in R); with walls in the window, any displacement does.
+    // 0.1-0.3 % in R). A rigid shift changes only the walls' reflection,
+    // which falls off as 1/s^2 with the distance s to the nearest wall: a
+    // shift by s/8 changes it by ~25 % of itself (a fraction of a percent
+    // of R once s is several l), so the rod is re-solved after a shift of
+    // max(update distance, s/8); along a straight channel (no pore cylinder
+    // in the window) a shift along x changes nothing.
     Eigen::Vector2d shift = Eigen::Vector2d::Zero();
     for (int i = 0; i < n; ++i) shift += (rod.positions[i] - state.solved_positions[i]).head<2>() / n;
-    const bool walls = state.window->has_walls();
+    double wall_distance = std::numeric_limits<double>::infinity();
+    if (state.window->has_walls())
+      for (const auto& x : rod.positions)
+        wall_distance = std::min(wall_distance, flow.geometry().signed_distance(x.x(), x.y()));
+    Eigen::Vector2d rigid = shift;
+    if (window_clear_of_cylinders(state.window->lattice(), flow.geometry())) rigid.x() = 0.0;
+    update = rigid.norm() > std::max(options_.update_distance, kWallShiftFraction * wall_distance);
     for (int i = 0; !update && i < n; ++i) {
-      Eigen::Vector2d moved = (rod.positions[i] - state.solved_positions[i]).head<2>();
-      if (!walls) moved -= shift;
+      const Eigen::Vector2d moved = (rod.positions[i] - state.solved_positions[i]).head<2>() - shift;
       update = moved.norm() > options_.update_distance;
     }
     update = update || !window_holds(rod, flow.geometry(), *state.window);
   }
   if (update) {
     if (!state.window || !window_holds(rod, flow.geometry(), *state.window))
-      place_window(rod, flow.geometry(), state, rods);
+      place_window(rod, flow, state, rods);
     update_resistance(rod, state, rods.statistics);
   } else {
     ++state.evaluations_since_update;

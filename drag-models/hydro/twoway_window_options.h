@@ -6,7 +6,9 @@ namespace hsrod {
 
 struct TwoWayWindowOptions {
   double cells_per_diameter = 4.0;  // lattice spacing h = d / cells_per_diameter [-] (4: footprint = sphere disc)
-  double margin = 0.0;              // window margin around the rod [m]; 0: auto (see margin_for)
+  double margin = 0.0;              // window reach beyond the rod [m]; 0: auto (see margin_for)
+  double fine_margin = 0.0;         // reach of the window's fine zone (cells of size h) [m]; 0: auto (fine_margin_for)
+  double grading = 1.2;             // growth ratio of the cells between fine zone and window edge [-], (1, 2]
   double update_distance = 0.0;     // re-solve after this sphere displacement [m]; 0: d / 2
   int update_every = 0;             // also re-solve after this many evaluations; 0: never by count
   long max_window_cells = 400000;   // larger windows are refused (std::invalid_argument)

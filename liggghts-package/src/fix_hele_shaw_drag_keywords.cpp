@@ -11,7 +11,9 @@
      mean_velocity U | flow_rate Q | reynolds Re    inflow (one required)
      model NAME|auto     a registered model (hydro/model_registry.h) or auto (default auto)
      window_cells c      twoway: grid cells per sphere diameter (default 4)
-     window_margin m     twoway: window margin around the rod [m] (default auto)
+     window_margin m     twoway: window reach beyond the rod [m] (default auto)
+     window_fine m       twoway: reach of the window's fine zone beyond the rod [m] (default auto)
+     window_grading g    twoway: growth ratio of the cells beyond the fine zone, (1, 2] (default 1.2)
      window_update s     twoway: re-solve after a sphere moved s [m] (default d/2)
      window_every k      twoway: re-solve at least every k steps (default 0: by distance only)
      tolerance t         auto: accepted relative deflection error (default 0.01)
@@ -118,6 +120,15 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
     } else if (strcmp(key, "window_margin") == 0) {
       need(1);
       model.options.window.margin = positive(key, number(1), " m");
+    } else if (strcmp(key, "window_fine") == 0) {
+      need(1);
+      model.options.window.fine_margin = positive(key, number(1), " m");
+    } else if (strcmp(key, "window_grading") == 0) {
+      need(1);
+      model.options.window.grading = number(1);
+      const double ratio = model.options.window.grading;
+      if (!(ratio > 1.0 && ratio <= 2.0))
+        error->all(FLERR, "fix hele_shaw/drag: window_grading must be in (1, 2] (cell growth ratio)");
     } else if (strcmp(key, "window_update") == 0) {
       need(1);
       model.options.window.update_distance = positive(key, number(1), " m");
@@ -156,7 +167,7 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
                     "Illegal fix hele_shaw/drag command: unknown keyword '%s' (expected channel, origin, pore, "
                     "cylinder, viscosity, fluid_density, mean_velocity, flow_rate, reynolds, model, tolerance, "
                     "coefficients, section, inertia, timestep_check, placement_check, memory_limit, window_cells, window_margin, "
-                    "window_update, window_every)", key);
+                    "window_fine, window_grading, window_update, window_every)", key);
       error->all(FLERR, msg);
     }
     iarg += 1 + values;

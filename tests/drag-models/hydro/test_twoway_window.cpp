@@ -5,6 +5,7 @@
 // dipole, the work it skips, and bad settings.
 #include "flow/brinkman_window.h"
 #include "flow/straight_channel_flow.h"
+#include "geometry/pore_constriction.h"
 #include "hydro/brinkman_green.h"
 #include "hydro/twoway_window_model.h"
 #include "rod_fixtures.h"
@@ -342,4 +343,76 @@ TEST(TwoWayWindowModel, GridConvergedFromFourCellsPerDiameter) {
               six.bending_load, four.velocity, six.velocity);
   EXPECT_NEAR(four.bending_load / six.bending_load, 1.0, 0.03);
   EXPECT_NEAR(four.velocity / six.velocity, 1.0, 0.005);
+}
+
+namespace {
+// A stream of 1 mm/s along x over a given planform (the friction does not
+// depend on the stream; the planform sets the walls of the window).
+class StreamOver : public BackgroundFlow {
+ public:
+  explicit StreamOver(ChannelGeometry geometry) : geometry_(std::move(geometry)) {}
+  Eigen::Vector2d velocity(double, double) const override { return {1e-3, 0.0}; }
+  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
+  double pressure(double, double) const override { return 0.0; }
+  double mean_velocity() const override { return 1e-3; }
+  const ChannelGeometry& geometry() const override { return geometry_; }
+  std::string description() const override { return "stream over a planform"; }
+
+ private:
+  ChannelGeometry geometry_;
+};
+
+// Total in-plane friction of a rigid rod, along x and along y [N s/m].
+Eigen::Vector2d rigid_friction(const TwoWayWindowModel& model, const RodGeometry& rod, const BackgroundFlow& flow) {
+  RodDrag drag;
+  model.evaluate(rod, flow, drag);
+  Eigen::Matrix2d total = Eigen::Matrix2d::Zero();
+  for (int i = 0; i < rod.size(); ++i)
+    for (int k = 0; k < rod.size(); ++k) total += drag.coupled_resistance.block<2, 2>(3 * i, 3 * k);
+  return total.diagonal();
+}
+}  // namespace
+
+// Window convergence (issue 14 item 3): the rod's friction along and across
+// its axis must not change by more than 1 % when the window grows 4x,
+// in the pore scene's straight channel (W = 200 um, beta = 0.15) and with
+// the rod in the pore throat between the two cylinders.
+TEST(TwoWayWindowModel, WindowConvergedFrictionAlongAndAcross) {
+  const double beta = 0.15, gap = kD / beta;
+  const ChannelGeometry straight = make_straight_channel(600e-6, 200e-6, gap);
+  const ChannelGeometry pore = make_pore_constriction(600e-6, 200e-6, gap, 85e-6, 300e-6);
+  struct Case {
+    const char* name;
+    const ChannelGeometry* geometry;
+    Eigen::Vector2d centre;
+    double degrees;
+  };
+  const Case cases[] = {{"channel centre, along x", &straight, {250e-6, 100e-6}, 0.0},
+                        {"channel centre, across", &straight, {250e-6, 100e-6}, 90.0},
+                        {"near side wall, along x", &straight, {250e-6, 12e-6}, 0.0},
+                        {"pore throat, along x", &pore, {300e-6, 100e-6}, 0.0},
+                        {"pore entrance, across", &pore, {270e-6, 100e-6}, 90.0}};
+  const auto reference_model = level4(beta);
+  for (const Case& c : cases) {
+    RodGeometry rod = straight_rod(10, kD, c.degrees * kPi / 180.0);
+    for (auto& x : rod.positions) x.head<2>() += c.centre;
+    const StreamOver flow(*c.geometry);
+    const double extent = (rod.positions.front() - rod.positions.back()).head<2>().cwiseAbs().maxCoeff() +
+                          2.0 * reference_model->footprint_radius();
+    TwoWayWindowOptions larger;
+    larger.margin = 4.0 * reference_model->margin_for(extent);
+    const TwoWayWindowModel fine(HydrodynamicParameters{kMu, gap, kD}, ConfinementTable::default_table());
+    const TwoWayWindowModel wide(HydrodynamicParameters{kMu, gap, kD}, ConfinementTable::default_table(), larger);
+    TwoWayWindowOptions old;
+    old.margin = old.fine_margin = fine.fine_margin_for(extent);
+    const TwoWayWindowModel uniform(HydrodynamicParameters{kMu, gap, kD}, ConfinementTable::default_table(), old);
+    const Eigen::Vector2d a = rigid_friction(fine, rod, flow), b = rigid_friction(wide, rod, flow);
+    const Eigen::Vector2d u = rigid_friction(uniform, rod, flow);
+    std::printf("%-26s friction x, y: default %.5g %.5g, 4x window %.5g %.5g N s/m: change %+.2f %+.2f %%"
+                " (uniform small window %+.2f %+.2f %%)\n",
+                c.name, a.x(), a.y(), b.x(), b.y(), 100.0 * (a.x() / b.x() - 1.0), 100.0 * (a.y() / b.y() - 1.0),
+                100.0 * (u.x() / b.x() - 1.0), 100.0 * (u.y() / b.y() - 1.0));
+    EXPECT_NEAR(a.x() / b.x(), 1.0, 0.01) << c.name;
+    EXPECT_NEAR(a.y() / b.y(), 1.0, 0.01) << c.name;
+  }
 }

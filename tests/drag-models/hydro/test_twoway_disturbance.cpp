@@ -117,7 +117,7 @@ TEST(TwoWayDisturbance, FieldAtCellCentresIsTheWindowSolution) {
     if (!std::isnan(q)) p_scale = std::max(p_scale, std::abs(q));
   for (int i = 0; i < g.nx; ++i)
     for (int j = 0; j < g.ny; ++j) {
-      const double x = g.x0 + (i + 0.5) * g.h, y = g.y0 + (j + 0.5) * g.h;
+      const double x = g.x_centre(i), y = g.y_centre(j);
       const Eigen::Vector2d got = fields[0].velocity(x, y);
       const Eigen::Vector2d want(0.5 * (node(window.u_unknown(i, j)) + node(window.u_unknown(i + 1, j))),
                                  0.5 * (node(window.v_unknown(i, j)) + node(window.v_unknown(i, j + 1))));
@@ -160,7 +160,7 @@ TEST(TwoWayDisturbance, RodHeldAcrossTheChannelConservesFluxAndRaisesThePressure
   ASSERT_TRUE(fields[0].spans_channel());
   const double q_gap = kU * s.channel.width();
   const WindowLattice& g = fields[0].lattice();
-  for (double x : {g.x0 + 0.3 * g.h, 140e-6, 150e-6, 150e-6 + 0.37 * kD, 160e-6, g.x0 + g.nx * g.h - 0.5 * g.h}) {
+  for (double x : {g.x0 + 0.3 * g.h, 140e-6, 150e-6, 150e-6 + 0.37 * kD, 160e-6, g.x1() - 0.5 * g.dx(g.nx - 1)}) {
     const double q = section_flux(s, fields, x, 2000);
     std::printf("x = %.2f um: flux %.6g m^2/s, background %.6g (%.2e)\n", x * 1e6, q, q_gap, q / q_gap - 1.0);
     EXPECT_NEAR(q / q_gap, 1.0, 0.005) << "x = " << x;
@@ -195,5 +195,5 @@ TEST(TwoWayDisturbance, RodHeldAcrossTheChannelConservesFluxAndRaisesThePressure
   EXPECT_NEAR(three_d / fields[0].upstream_rise(), 1.5, 0.05);
   // Upstream of the window the rise holds across the channel, downstream nothing.
   EXPECT_EQ(disturbance_pressure(fields, g.x0 - 1e-6, 10e-6), fields[0].upstream_rise());
-  EXPECT_EQ(disturbance_pressure(fields, g.x0 + g.nx * g.h + 1e-6, 10e-6), 0.0);
+  EXPECT_EQ(disturbance_pressure(fields, g.x1() + 1e-6, 10e-6), 0.0);
 }

@@ -314,8 +314,8 @@ void OverdampedRodSolver::Workspace::analyse_structure(const OverdampedRod& rod)
     partners[count[b.i]++] = b.j;
     partners[count[b.j]++] = b.i;
   }
-  bond_loads.resize(rod.bonds.size());
-  bond_jacobians.resize(rod.bonds.size());
+  // bond_loads, bond_jacobians: sized where they are used (step), not used
+  // by the chain's fused assembly.
   diagonal.resize(n);
   upper.resize(n);
   lower.resize(n);
@@ -567,27 +567,75 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   w.analyse_structure(rod);
   if (static_cast<int>(w.previous_velocities.size()) != n) w.previous_velocities.assign(n, Vector6d::Zero());
 
-  // Bonds: loads at y_n and their Jacobian (K = -d loads / dy).
-  for (std::size_t k = 0; k < rod.bonds.size(); ++k) {
-    const RodBond& b = rod.bonds[k];
-    beam_bond_loads_and_jacobian(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j],
-                                 rod.orientations[b.j], b.rest, b.stiffness, w.bond_loads[k], w.bond_jacobians[k]);
+  // A chain with local drag (the common case) goes to the block-tridiagonal
+  // solve unless a self-contact appears: its blocks are assembled while the
+  // bonds are evaluated, each bond's 12 x 12 Jacobian used where it is made
+  // and not stored (at 10 000 spheres the stored Jacobians alone are 11 MB,
+  // beyond the caches). The sums are those of add_couplings in its order:
+  // drag, then bonds in order, then wall contacts.
+  const bool automatic = w.method == LinearSolver::automatic;
+  const bool fused = automatic && w.chain && !drag.coupled() && n > 0;
+  if (fused) {
+    for (int k = 0; k < n; ++k) {
+      w.diagonal[k].setZero();
+      w.upper[k].setZero();
+      w.lower[k].setZero();
+      w.diagonal[k].block<3, 3>(3, 3) += drag.rotational_resistance[k] / dt * Eigen::Matrix3d::Identity();
+      w.diagonal[k].block<3, 3>(0, 0) += drag.resistance[k] / dt;
+    }
   }
-  const Clock::time_point t_bonds = Clock::now();
-  w.find_contacts(rod, geometry, walls, result);
-  const Clock::time_point t_contacts = Clock::now();
 
-  // Right-hand side: driving, external, bond and contact loads.
+  // Right-hand side: driving and external loads, then bond loads in order.
   Eigen::VectorXd& rhs = w.rhs;
   rhs.resize(ndof);
   for (int i = 0; i < n; ++i) {
     rhs.segment<3>(6 * i) = drag.driving_force[i] + rod.external_forces[i];
     rhs.segment<3>(6 * i + 3) = drag.driving_torque[i] + rod.external_torques[i];
   }
-  for (std::size_t k = 0; k < rod.bonds.size(); ++k) {
-    rhs.segment<6>(6 * rod.bonds[k].i) += w.bond_loads[k].head<6>();
-    rhs.segment<6>(6 * rod.bonds[k].j) += w.bond_loads[k].tail<6>();
+  // Bonds: loads at y_n and their Jacobian (K = -d loads / dy).
+  if (fused) {
+    BondLoads loads;
+    BondJacobian jacobian;
+    for (std::size_t k = 0; k < rod.bonds.size(); ++k) {
+      const RodBond& b = rod.bonds[k];
+      beam_bond_loads_and_jacobian(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j],
+                                   rod.orientations[b.j], b.rest, b.stiffness, loads, jacobian);
+      rhs.segment<6>(6 * b.i) += loads.head<6>();
+      rhs.segment<6>(6 * b.j) += loads.tail<6>();
+      // A chain bond joins k and k+1 in either order.
+      Matrix6d& ij = b.j == b.i + 1 ? w.upper[b.i] : w.lower[b.i];
+      Matrix6d& ji = b.j == b.i + 1 ? w.lower[b.j] : w.upper[b.j];
+      w.diagonal[b.i] += -jacobian.block<6, 6>(0, 0);
+      ij += -jacobian.block<6, 6>(0, 6);
+      ji += -jacobian.block<6, 6>(6, 0);
+      w.diagonal[b.j] += -jacobian.block<6, 6>(6, 6);
+    }
+  } else {
+    w.bond_loads.resize(rod.bonds.size());
+    w.bond_jacobians.resize(rod.bonds.size());
+    for (std::size_t k = 0; k < rod.bonds.size(); ++k) {
+      const RodBond& b = rod.bonds[k];
+      beam_bond_loads_and_jacobian(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j],
+                                   rod.orientations[b.j], b.rest, b.stiffness, w.bond_loads[k], w.bond_jacobians[k]);
+      rhs.segment<6>(6 * b.i) += w.bond_loads[k].head<6>();
+      rhs.segment<6>(6 * b.j) += w.bond_loads[k].tail<6>();
+    }
   }
+  const Clock::time_point t_bonds = Clock::now();
+  w.find_contacts(rod, geometry, walls, result);
+  const Clock::time_point t_contacts = Clock::now();
+  // A self-contact leaves the band: the other solvers need the stored
+  // Jacobians (the same evaluation again; rare).
+  if (fused && !w.pair_contacts.empty()) {
+    BondLoads loads;
+    w.bond_jacobians.resize(rod.bonds.size());
+    for (std::size_t k = 0; k < rod.bonds.size(); ++k) {
+      const RodBond& b = rod.bonds[k];
+      beam_bond_loads_and_jacobian(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j],
+                                   rod.orientations[b.j], b.rest, b.stiffness, loads, w.bond_jacobians[k]);
+    }
+  }
+
   for (const SphereWallContact& c : w.wall_contacts) rhs.segment<3>(6 * c.sphere) += c.force;
   for (const SpherePairContact& c : w.pair_contacts) {
     rhs.segment<3>(6 * c.i) += c.force_on_i;
@@ -596,19 +644,13 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
 
   // Matrix R / dt + K, factorised by the cheapest method its couplings allow.
   const Eigen::VectorXd* displacement = &rhs;
-  const bool automatic = w.method == LinearSolver::automatic;
-  if (automatic && w.chain && !drag.coupled() && w.pair_contacts.empty() && n > 0) {
-    for (int k = 0; k < n; ++k) {
-      w.diagonal[k].setZero();
-      w.upper[k].setZero();
-      w.lower[k].setZero();
+  if (fused && w.pair_contacts.empty()) {
+    // Drag and bonds are in the blocks already; the wall contacts last, as
+    // add_couplings adds them.
+    for (const SphereWallContact& c : w.wall_contacts) {
+      w.diagonal[c.sphere].block<3, 3>(0, 0) += c.stiffness;
+      if (c.rubbing) w.diagonal[c.sphere] += c.friction / dt;
     }
-    w.add_couplings(rod, drag, dt, [&w](int row, int col, const auto& block) {
-      using Block = std::decay_t<decltype(block)>;
-      const int r = row / 6, c = col / 6;
-      Matrix6d& target = c == r ? w.diagonal[r] : (c == r + 1 ? w.upper[r] : w.lower[r]);
-      target.template block<Block::RowsAtCompileTime, Block::ColsAtCompileTime>(row % 6, col % 6) += block;
-    });
     w.solve_banded(n);
     w.kept = Workspace::Kept::banded;
     ++w.statistics.banded_steps;

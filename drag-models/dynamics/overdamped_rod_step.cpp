@@ -1,5 +1,6 @@
 #include "dynamics/overdamped_rod_step.h"
 
+#include "dynamics/dense_lu.h"
 #include "dynamics/small_block_lu.h"
 
 #include "rod/beam_bond_jacobian.h"
@@ -254,8 +255,8 @@ struct OverdampedRodSolver::Workspace {
   // the band, O(n).
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu;
   std::vector<int> analysed_outer, analysed_inner;  // pattern `lu` was analysed for
-  Eigen::MatrixXd dense;
-  Eigen::PartialPivLU<Eigen::MatrixXd> dense_lu;
+  Eigen::MatrixXd dense;  // assembled matrix, then its LU factors (dense_lu)
+  DenseLu dense_lu;
 
   // The factorisation of the last step, for newton_correction: which one
   // is kept, and the last step's solution dy and dt.
@@ -683,8 +684,9 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
       using Block = std::decay_t<decltype(block)>;
       w.dense.template block<Block::RowsAtCompileTime, Block::ColsAtCompileTime>(row, col) += block;
     });
-    w.dense_lu.compute(w.dense);
-    w.dy = w.dense_lu.solve(rhs);
+    w.dense_lu.compute_in_place(w.dense);
+    w.dy = rhs;
+    w.dense_lu.solve_in_place(w.dy);
     displacement = &w.dy;
     w.kept = Workspace::Kept::dense;
     ++w.statistics.dense_steps;
@@ -788,7 +790,10 @@ bool OverdampedRodSolver::newton_correction(const OverdampedRod& rod, const RodD
       delta = r;
       w.resolve_banded(delta);
       break;
-    case Workspace::Kept::dense: delta = w.dense_lu.solve(r); break;
+    case Workspace::Kept::dense:
+      delta = r;
+      w.dense_lu.solve_in_place(delta);
+      break;
     case Workspace::Kept::sparse: delta = w.lu.solve(r); break;
     case Workspace::Kept::none: return false;
   }

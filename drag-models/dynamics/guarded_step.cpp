@@ -31,7 +31,7 @@ Eigen::VectorXd elastic_loads(const OverdampedRod& rod, const ChannelGeometry* g
       const WallContact c = wall_contact(*geometry, *walls, rod.positions[i], rod.radii[i]);
       if (c.touching) f.segment<3>(6 * i) += c.force;
     }
-  if (walls && walls->self_contact && n > 2) {
+  if (walls && sphere_pair_search_on(rod, *walls)) {
     double largest_radius = 0.0;
     for (double r : rod.radii) largest_radius = std::max(largest_radius, r);
     std::vector<std::vector<int>> bonded(n);
@@ -41,6 +41,7 @@ Eigen::VectorXd elastic_loads(const OverdampedRod& rod, const ChannelGeometry* g
     }
     for (const auto& [i, j] : nearby_sphere_pairs(rod.positions, 2.0 * largest_radius)) {
       if (std::find(bonded[i].begin(), bonded[i].end(), j) != bonded[i].end()) continue;
+      if (!sphere_pair_contact_on(rod, *walls, i, j)) continue;
       const WallContact c = sphere_contact(*walls, rod.positions[i], rod.radii[i], rod.positions[j], rod.radii[j]);
       if (!c.touching) continue;
       f.segment<3>(6 * i) += c.force;
@@ -140,8 +141,25 @@ StepAssessment assess_step(const std::vector<Eigen::Vector3d>& x0, const Overdam
       }
     }
   }
+  // Spheres of two rods (a cluster stepped together) pressed into each other
+  // beyond max_overlap radii in one step: the Hertz contact, linearised at
+  // the step's start, cannot stop an approach it did not see.
+  if (walls && walls->rod_contact && !after.rod_of_sphere.empty() && a.crossing_sphere < 0) {
+    double largest_radius = 0.0;
+    for (double r : after.radii) largest_radius = std::max(largest_radius, r);
+    for (const auto& [i, j] : nearby_sphere_pairs(after.positions, 2.0 * largest_radius)) {
+      if (after.same_rod(i, j)) continue;
+      const double contact = after.radii[i] + after.radii[j];
+      const double grown = (contact - (after.positions[i] - after.positions[j]).norm()) -
+                           std::max(0.0, contact - (x0[i] - x0[j]).norm());
+      if (grown > limits.max_overlap * std::min(after.radii[i], after.radii[j])) {
+        a.interpenetrating_sphere = i;
+        break;
+      }
+    }
+  }
   if (a.displacement > limits.max_displacement || a.strain_change > limits.max_strain_change ||
-      a.bond_strain > limits.max_bond_strain || a.crossing_sphere >= 0) {
+      a.bond_strain > limits.max_bond_strain || a.crossing_sphere >= 0 || a.interpenetrating_sphere >= 0) {
     std::ostringstream p;
     p.precision(3);
     if (a.displacement > limits.max_displacement)
@@ -152,8 +170,11 @@ StepAssessment assess_step(const std::vector<Eigen::Vector3d>& x0, const Overdam
     else if (a.bond_strain > limits.max_bond_strain)
       p << "a bond's axial strain reaches " << a.bond_strain << " (limit max_bond_strain " << limits.max_bond_strain
         << ")";
-    else
+    else if (a.crossing_sphere >= 0)
       p << "sphere " << a.crossing_sphere << " of the rod would cross or enter a wall (new overlap > "
+        << limits.max_overlap << " radii)";
+    else
+      p << "sphere " << a.interpenetrating_sphere << " would press into a sphere of another rod (new overlap > "
         << limits.max_overlap << " radii)";
     a.problem = p.str();
   }
@@ -228,10 +249,12 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
   report.worst = StepAssessment();
   OverdampedStepResult& total = report.result;
   total.largest_displacement = total.wall_force = total.friction_force = 0.0;
-  total.wall_contact = total.self_contact = false;
+  total.wall_contact = total.self_contact = total.rod_contact = false;
+  total.rod_contact_force = 0.0;
   total.velocities.assign(n, Eigen::Vector3d::Zero());
   total.angular_velocities.assign(n, Eigen::Vector3d::Zero());
   total.hydrodynamic_forces.assign(n, Eigen::Vector3d::Zero());
+  total.sphere_wall_force.assign(n, 0.0);
 
   // The rod itself is stepped; (x0, q0) of the whole step and of the
   // current substep are kept to go back to.
@@ -390,9 +413,12 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
         total.angular_velocities[i] +=
             rotation_vector((rod.orientations[i] * ws.substep_orientations[i].inverse()).normalized()) / dt;
         total.hydrodynamic_forces[i] += r.hydrodynamic_forces[i] * (h / dt);
+        total.sphere_wall_force[i] += r.sphere_wall_force[i] * (h / dt);
       }
       total.wall_contact = total.wall_contact || r.wall_contact;
       total.self_contact = total.self_contact || r.self_contact;
+      total.rod_contact = total.rod_contact || r.rod_contact;
+      total.rod_contact_force += r.rod_contact_force * (h / dt);
       total.wall_force += r.wall_force * (h / dt);
       total.largest_displacement = std::max(total.largest_displacement, r.largest_displacement);
       report.worst.displacement = std::max(report.worst.displacement, a.displacement);

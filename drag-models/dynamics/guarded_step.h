@@ -99,6 +99,7 @@ struct StepAssessment {
   double truncation_error = 0.0;  // adaptive: local truncation error / step displacement [-] (0 if not checked)
   double bond_load_ratio = 0.0;  // max k_n L0 |d strain| / max |R dx / dt| [-]
   int crossing_sphere = -1;    // a sphere whose centre ended in or crossed a wall, or -1
+  int interpenetrating_sphere = -1;  // a sphere pressed > max_overlap radii deeper into another rod's, or -1
   std::string problem;         // "" if within the limits
 };
 

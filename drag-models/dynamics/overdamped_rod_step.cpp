@@ -205,6 +205,8 @@ struct SpherePairContact {
   int i, j;
   Eigen::Vector3d force_on_i;  // [N]
   Eigen::Matrix3d stiffness;   // -dF_i/dx_i [N/m]
+  bool rubbing;                // friction acts (friction below is set)
+  Matrix12d friction;          // secant resistance about the previous velocities of (i, j) [N s/m, N s, N m s]
 };
 
 }  // namespace
@@ -275,6 +277,18 @@ struct OverdampedRodSolver::Workspace {
   void analyse_structure(const OverdampedRod& rod);
   void find_contacts(const OverdampedRod& rod, const ChannelGeometry* geometry, const WallContactParameters* walls,
                      OverdampedStepResult& result);
+  // (v, omega) of sphere i about which friction is linearised: the rod's
+  // given velocities, else the solver's last step.
+  Vector6d previous_velocity(const OverdampedRod& rod, int i) const {
+    const int n = rod.size();
+    Vector6d u0 = previous_velocities[i];
+    if (static_cast<int>(rod.velocities.size()) == n) {
+      u0.head<3>() = rod.velocities[i];
+      u0.tail<3>() = static_cast<int>(rod.angular_velocities.size()) == n ? rod.angular_velocities[i]
+                                                                           : Eigen::Vector3d::Zero();
+    }
+    return u0;
+  }
   bool bonded(int i, int j) const {
     return std::find(partners.begin() + partner_start[i], partners.begin() + partner_start[i + 1], j) !=
            partners.begin() + partner_start[i + 1];
@@ -348,16 +362,12 @@ void OverdampedRodSolver::Workspace::find_contacts(const OverdampedRod& rod, con
       if (!c.touching) continue;
       result.wall_contact = true;
       result.wall_force += c.force.norm();
+      if (static_cast<int>(result.sphere_wall_force.size()) == n) result.sphere_wall_force[i] += c.force.norm();
       SphereWallContact contact{i, c.force, c.stiffness, false, Matrix6d::Zero()};
       // Wall friction: secant resistance about the previous velocities,
       // c G^T G (dynamics/wall_contact.h), on the sphere's own 6x6 block.
       if (walls->friction_coefficient > 0.0) {
-        Vector6d u0 = previous_velocities[i];
-        if (static_cast<int>(rod.velocities.size()) == n) {
-          u0.head<3>() = rod.velocities[i];
-          u0.tail<3>() = static_cast<int>(rod.angular_velocities.size()) == n ? rod.angular_velocities[i]
-                                                                               : Eigen::Vector3d::Zero();
-        }
+        const Vector6d u0 = previous_velocity(rod, i);
         contact.rubbing = true;
         for (int k = 0; k < c.points; ++k)
           contact.friction += wall_friction_resistance(c.point[k], rod.radii[i], walls->friction_coefficient,
@@ -366,18 +376,31 @@ void OverdampedRodSolver::Workspace::find_contacts(const OverdampedRod& rod, con
       wall_contacts.push_back(contact);
     }
   }
-  // Non-bonded spheres of the rod touching each other (a folding rod).
-  if (walls && walls->self_contact && n > 2) {
+  // Non-bonded spheres touching each other: a folding rod, or two rods of
+  // a cluster stepped together.
+  if (walls && sphere_pair_search_on(rod, *walls)) {
     double largest_radius = 0.0;
     for (double r : rod.radii) largest_radius = std::max(largest_radius, r);
     find_nearby_pairs(rod.positions, 2.0 * largest_radius, cells, candidates, false);
     for (const auto& pair : candidates) {
       const int i = pair.first, j = pair.second;
-      if (bonded(i, j)) continue;
+      if (bonded(i, j) || !sphere_pair_contact_on(rod, *walls, i, j)) continue;
       const WallContact c = sphere_contact(*walls, rod.positions[i], rod.radii[i], rod.positions[j], rod.radii[j]);
       if (!c.touching) continue;
       result.self_contact = true;
-      pair_contacts.push_back({i, j, c.force, c.stiffness});
+      if (!rod.same_rod(i, j)) {
+        result.rod_contact = true;
+        result.rod_contact_force += c.point[0].normal_force;
+      }
+      SpherePairContact contact{i, j, c.force, c.stiffness, false, Matrix12d::Zero()};
+      if (walls->rod_friction_coefficient > 0.0) {
+        Vector12d u0;
+        u0 << previous_velocity(rod, i), previous_velocity(rod, j);
+        contact.rubbing = true;
+        contact.friction = sphere_friction_resistance(c.point[0], rod.radii[i], rod.radii[j],
+                                                      walls->rod_friction_coefficient, walls->slip_velocity, u0);
+      }
+      pair_contacts.push_back(contact);
     }
     // Summed in the order of the sphere indices, independent of the cells.
     std::sort(pair_contacts.begin(), pair_contacts.end(),
@@ -418,6 +441,11 @@ void OverdampedRodSolver::Workspace::add_couplings(const OverdampedRod& rod, con
     add(6 * c.j, 6 * c.j, c.stiffness);
     add(6 * c.i, 6 * c.j, (-c.stiffness).eval());
     add(6 * c.j, 6 * c.i, (-c.stiffness).eval());
+    if (!c.rubbing) continue;
+    add(6 * c.i, 6 * c.i, (c.friction.block<6, 6>(0, 0) / dt).eval());
+    add(6 * c.i, 6 * c.j, (c.friction.block<6, 6>(0, 6) / dt).eval());
+    add(6 * c.j, 6 * c.i, (c.friction.block<6, 6>(6, 0) / dt).eval());
+    add(6 * c.j, 6 * c.j, (c.friction.block<6, 6>(6, 6) / dt).eval());
   }
 }
 
@@ -562,8 +590,10 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   const int n = rod.size();
   const int ndof = 6 * n;
   result.largest_displacement = 0.0;
-  result.wall_contact = result.self_contact = false;
+  result.wall_contact = result.self_contact = result.rod_contact = false;
   result.wall_force = 0.0;
+  result.rod_contact_force = 0.0;
+  result.sphere_wall_force.assign(n, 0.0);
   result.friction_force = 0.0;
   w.analyse_structure(rod);
   if (static_cast<int>(w.previous_velocities.size()) != n) w.previous_velocities.assign(n, Vector6d::Zero());
@@ -726,6 +756,12 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   }
   for (const SphereWallContact& c : w.wall_contacts)
     if (c.rubbing) result.friction_force += (c.friction * w.previous_velocities[c.sphere]).head<3>().norm();
+  for (const SpherePairContact& c : w.pair_contacts) {
+    if (!c.rubbing) continue;
+    Vector12d u;
+    u << w.previous_velocities[c.i], w.previous_velocities[c.j];
+    result.friction_force += (c.friction * u).head<3>().norm();
+  }
   // F_hyd = driving - R v at the new velocities.
   if (drag.coupled()) {
     w.velocities.resize(3 * n);
@@ -759,6 +795,14 @@ bool OverdampedRodSolver::newton_correction(const OverdampedRod& rod, const RodD
   // Friction first: find_contacts below replaces the step's contacts.
   for (const SphereWallContact& c : w.wall_contacts)
     if (c.rubbing) r.segment<6>(6 * c.sphere).noalias() -= c.friction * dy.segment<6>(6 * c.sphere) / dt;
+  for (const SpherePairContact& c : w.pair_contacts) {
+    if (!c.rubbing) continue;
+    Vector12d u;
+    u << dy.segment<6>(6 * c.i), dy.segment<6>(6 * c.j);
+    const Vector12d loads = c.friction * u / dt;
+    r.segment<6>(6 * c.i) -= loads.head<6>();
+    r.segment<6>(6 * c.j) -= loads.tail<6>();
+  }
   if (drag.coupled()) {
     w.velocities.resize(3 * n);
     for (int i = 0; i < n; ++i) w.velocities.segment<3>(3 * i) = dy.segment<3>(6 * i) / dt;
@@ -777,8 +821,8 @@ bool OverdampedRodSolver::newton_correction(const OverdampedRod& rod, const RodD
     r.segment<6>(6 * b.i) += loads.head<6>();
     r.segment<6>(6 * b.j) += loads.tail<6>();
   }
-  w.contact_scratch.wall_contact = w.contact_scratch.self_contact = false;
-  w.contact_scratch.wall_force = 0.0;
+  w.contact_scratch.wall_contact = w.contact_scratch.self_contact = w.contact_scratch.rod_contact = false;
+  w.contact_scratch.wall_force = w.contact_scratch.rod_contact_force = 0.0;
   w.find_contacts(rod, geometry, walls, w.contact_scratch);
   for (const SphereWallContact& c : w.wall_contacts) r.segment<3>(6 * c.sphere) += c.force;
   for (const SpherePairContact& c : w.pair_contacts) {

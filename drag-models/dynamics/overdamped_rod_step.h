@@ -61,6 +61,13 @@ struct OverdampedRod {
   // is linearised (dynamics/wall_contact.h). Empty: the solver's own last
   // step (rest before its first).
   std::vector<Eigen::Vector3d> velocities, angular_velocities;
+  // Several rods stepped together (a cluster of rods in contact or in
+  // hydrodynamic interaction, dynamics/rod_cluster.h): the rod each sphere
+  // belongs to. Empty: all spheres are one rod. Spheres of different rods
+  // touch when WallContactParameters::rod_contact is on; non-bonded spheres
+  // of one rod when self_contact is.
+  std::vector<int> rod_of_sphere;
+  bool same_rod(int i, int j) const { return rod_of_sphere.empty() || rod_of_sphere[i] == rod_of_sphere[j]; }
   int size() const { return static_cast<int>(positions.size()); }
   // Sphere i's pose as a bond end (velocities zero: the step's bond loads
   // and strains depend on the configuration only).
@@ -78,8 +85,11 @@ struct OverdampedStepResult {
   std::vector<Eigen::Vector3d> hydrodynamic_forces;  // F_hyd at the new velocities [N]
   double largest_displacement = 0.0;              // max |dx| [m]
   bool wall_contact = false;
-  bool self_contact = false;                      // non-bonded spheres of the rod touched
+  bool self_contact = false;                      // non-bonded spheres touched (of one rod, or of two rods)
+  bool rod_contact = false;                       // spheres of two different rods touched
+  double rod_contact_force = 0.0;                 // sum of |Hertz force| between spheres of different rods [N]
   double wall_force = 0.0;                        // sum of |contact force| [N]
+  std::vector<double> sphere_wall_force;          // per sphere, |wall contact force| [N] (which rod of a cluster touched)
   double friction_force = 0.0;                    // sum of |wall friction force| at the new velocities [N]
 };
 
@@ -156,6 +166,16 @@ class OverdampedRodSolver {
 // a time loop should keep an OverdampedRodSolver).
 OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag, double dt,
                                          const ChannelGeometry* geometry, const WallContactParameters* walls);
+
+// Whether the contact law acts between non-bonded spheres i and j of `rod`:
+// self_contact for spheres of one rod, rod_contact for spheres of two rods.
+inline bool sphere_pair_contact_on(const OverdampedRod& rod, const WallContactParameters& walls, int i, int j) {
+  return rod.same_rod(i, j) ? walls.self_contact : walls.rod_contact;
+}
+// Whether any sphere pair of `rod` can be in contact under `walls`.
+inline bool sphere_pair_search_on(const OverdampedRod& rod, const WallContactParameters& walls) {
+  return rod.size() > 1 && (walls.self_contact || (walls.rod_contact && !rod.rod_of_sphere.empty()));
+}
 
 // Pairs (i < j) of spheres of the rod whose centres are within `reach` [m]
 // of each other in x and in y (a superset of the touching pairs), in

@@ -35,6 +35,21 @@ Matrix6d wall_friction_resistance(const WallContactPoint& contact, double radius
   return coefficient * g.transpose() * g;
 }
 
+Matrix12d sphere_friction_resistance(const WallContactPoint& contact, double ri, double rj, double mu,
+                                     double slip_velocity, const Vector12d& previous_velocity) {
+  if (!(mu > 0.0) || !(contact.normal_force > 0.0)) return Matrix12d::Zero();
+  const Eigen::Vector3d& n = contact.normal;
+  const Eigen::Matrix3d tangential = Eigen::Matrix3d::Identity() - n * n.transpose();
+  Eigen::Matrix<double, 3, 12> g;
+  g.block<3, 3>(0, 0) = tangential;
+  g.block<3, 3>(0, 3) = ri * cross_matrix(n);
+  g.block<3, 3>(0, 6) = -tangential;
+  g.block<3, 3>(0, 9) = rj * cross_matrix(n);
+  const double slip = (g * previous_velocity).norm();
+  const double coefficient = mu * contact.normal_force / std::max(slip, slip_velocity);
+  return coefficient * g.transpose() * g;
+}
+
 WallContact sphere_contact(const WallContactParameters& p, const Eigen::Vector3d& xi, double ri,
                            const Eigen::Vector3d& xj, double rj) {
   WallContact c;

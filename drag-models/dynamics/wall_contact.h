@@ -23,6 +23,13 @@ struct WallContactParameters {
   bool planform_walls = true;   // side walls and obstacles
   bool gap_walls = true;        // the two walls bounding the gap
   bool self_contact = true;     // non-bonded spheres of one rod touch (a folding rod)
+  // Hertz contact between spheres of different rods of one step (a cluster
+  // of rods solved together: OverdampedRod::rod_of_sphere); off: rods of a
+  // cluster pass through each other (fix rod/implicit refuses overlaps then).
+  bool rod_contact = false;
+  // Coulomb friction between touching spheres (other rods, and non-bonded
+  // spheres of one rod) mu_rr [-]; 0 = frictionless. Regularised with slip_velocity.
+  double rod_friction_coefficient = 0.0;
   double friction_coefficient = 0.0;  // Coulomb wall friction mu_fr [-] (paper Table 1: 0.5); 0 = frictionless
   double slip_velocity = 1e-6;        // v_s of the regularised law [m/s]: below it friction is viscous
   double effective_modulus() const { return youngs_modulus / (1.0 - poisson_ratio * poisson_ratio); }
@@ -71,6 +78,24 @@ Matrix6d wall_friction_resistance(const WallContactPoint& contact, double radius
 // stiffness -dF_i/dx_i. Zero when they do not overlap.
 WallContact sphere_contact(const WallContactParameters& parameters, const Eigen::Vector3d& centre_i, double radius_i,
                            const Eigen::Vector3d& centre_j, double radius_j);
+
+using Matrix12d = Eigen::Matrix<double, 12, 12>;
+using Vector12d = Eigen::Matrix<double, 12, 1>;
+
+// The same regularised Coulomb law between two touching spheres i and j,
+// `contact.normal` the unit normal from j to i and `contact.normal_force`
+// the Hertz force magnitude. The contact point is at -r_i n from i and
+// +r_j n from j; the slip of i's surface over j's for u = (v_i, omega_i,
+// v_j, omega_j) is
+//     v_t = G u,  G = [ (I - n n^T)  r_i [n]x  -(I - n n^T)  r_j [n]x ]  (3x12),
+// the friction force on i is F_t = -mu F_n v_t / max(|v_t|, v_s) (on j:
+// -F_t), and the loads on (i, j) are G^T F_t. Secant about the previous
+// velocities u0 as for a wall: returns c G^T G, c = mu F_n / max(|G u0|, v_s),
+// symmetric positive semi-definite (it only dissipates; a rod resting on
+// another sticks below mu F_n and slides at mu F_n above).
+Matrix12d sphere_friction_resistance(const WallContactPoint& contact, double radius_i, double radius_j,
+                                     double friction_coefficient, double slip_velocity,
+                                     const Vector12d& previous_velocity);
 
 WallContact wall_contact(const ChannelGeometry& geometry, const WallContactParameters& parameters,
                          const Eigen::Vector3d& centre, double radius);

@@ -89,7 +89,23 @@ class HydrodynamicModel {
   virtual void restore_state(ModelState& state, const std::vector<double>& data, const BackgroundFlow& flow) const;
   // Without kept state (level 4: a full window solve for this call).
   void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const;
+
+  // Several rods at once (issue 11, several rods): the load on all their
+  // spheres, rod after rod in the order given. A model whose rods interact
+  // hydrodynamically (interaction_reach() > 0: level 3) couples the spheres
+  // of different rods; the default evaluates each rod alone (with its
+  // state) and joins the loads (R block-diagonal over the rods).
+  virtual void evaluate_rods(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, RodDrag& out,
+                             ModelState* state) const;
+  // Distance [m] between sphere centres of two rods beyond which their
+  // hydrodynamic interaction is dropped (the rods are evaluated apart);
+  // 0: the model has no interaction between rods.
+  virtual double interaction_reach() const { return 0.0; }
 };
+
+// The loads of rods evaluated apart, joined rod after rod into one load
+// (R block-diagonal: dense when any part is coupled).
+void join_rod_drags(const std::vector<RodDrag>& parts, RodDrag& out);
 
 // The model registered under `name` (hydro/model_registry.h lists them).
 // Throws std::invalid_argument for an unknown name or beta outside the table.

@@ -5,6 +5,9 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
+#include <cmath>
+
 namespace hsrod {
 
 NonlocalRodModel::NonlocalRodModel(const HydrodynamicParameters& p, const ConfinementTable& table)
@@ -48,6 +51,27 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
     out.driving_force[i] = driving.segment<3>(3 * i);
     out.resistance[i] = out.coupled_resistance.block<3, 3>(3 * i, 3 * i);
   }
+}
+
+void NonlocalRodModel::evaluate_rods(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, RodDrag& out,
+                                     ModelState* state) const {
+  if (rods.size() == 1) {
+    evaluate(rods.front(), flow, out, state);
+    return;
+  }
+  RodGeometry all;
+  all.sphere_diameter = rods.empty() ? 0.0 : rods.front().sphere_diameter;
+  all.id = rods.empty() ? 0 : rods.front().id;
+  for (const RodGeometry& rod : rods) all.positions.insert(all.positions.end(), rod.positions.begin(), rod.positions.end());
+  evaluate(all, flow, out, state);
+}
+
+double NonlocalRodModel::interaction_reach() const {
+  const double h = parameters_.gap_height;
+  const double screening = h / std::sqrt(12.0);
+  const double dipole = std::sqrt(kMidplaneFactor * obstruction_friction_ * h /
+                                  (24.0 * kPi * parameters_.viscosity * kInteractionTolerance));
+  return std::max(10.0 * screening, dipole);
 }
 
 }  // namespace hsrod

@@ -29,6 +29,23 @@ class NonlocalRodModel : public LocalDragBase {
   int level() const override { return 3; }
   using HydrodynamicModel::evaluate;
   void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState* state) const override;
+  // Several rods: the same Green's function between the spheres of all of
+  // them (the obstruction of one rod shields or drives the others), one
+  // dense solve over all their spheres. Level 3 itself does not tell
+  // spheres of one rod from those of another: two lone spheres are one
+  // two-sphere rod without its bond.
+  void evaluate_rods(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, RodDrag& out,
+                     ModelState* state) const override;
+  // Beyond the screening length l = H / sqrt(12) the Green's function is
+  // the Hele-Shaw potential dipole |G| = H / (24 pi mu r^2)
+  // (brinkman_green.h), which decays only algebraically; the coupling of
+  // two spheres relative to their own obstruction, c zeta_o |G|, falls
+  // below kInteractionTolerance at
+  //     r_c = max(10 l, sqrt(c zeta_o H / (24 pi mu kInteractionTolerance))).
+  // Rods farther apart than r_c (nearest sphere centres) are evaluated
+  // apart; the dropped coupling changes a load by ~1e-3 of itself at most.
+  static constexpr double kInteractionTolerance = 1e-3;  // [-]
+  double interaction_reach() const override;
 
   double film_friction() const { return film_friction_; }              // zeta_f [N s/m]
   double obstruction_friction() const { return obstruction_friction_; }  // zeta_o [N s/m]

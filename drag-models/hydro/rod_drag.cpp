@@ -45,6 +45,37 @@ void HydrodynamicModel::evaluate(const RodGeometry& rod, const BackgroundFlow& f
   evaluate(rod, flow, out, state.get());
 }
 
+void HydrodynamicModel::evaluate_rods(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, RodDrag& out,
+                                      ModelState* state) const {
+  std::vector<RodDrag> parts(rods.size());
+  for (std::size_t k = 0; k < rods.size(); ++k) evaluate(rods[k], flow, parts[k], state);
+  join_rod_drags(parts, out);
+}
+
+void join_rod_drags(const std::vector<RodDrag>& parts, RodDrag& out) {
+  int n = 0;
+  bool coupled = false;
+  for (const RodDrag& p : parts) {
+    n += static_cast<int>(p.driving_force.size());
+    coupled = coupled || p.coupled();
+  }
+  out.resize(n);
+  if (coupled) out.coupled_resistance.setZero(3 * n, 3 * n);
+  int offset = 0;
+  for (const RodDrag& p : parts) {
+    const int m = static_cast<int>(p.driving_force.size());
+    for (int i = 0; i < m; ++i) {
+      out.resistance[offset + i] = p.resistance[i];
+      out.driving_force[offset + i] = p.driving_force[i];
+      out.rotational_resistance[offset + i] = p.rotational_resistance[i];
+      out.driving_torque[offset + i] = p.driving_torque[i];
+      if (coupled && !p.coupled()) out.coupled_resistance.block<3, 3>(3 * (offset + i), 3 * (offset + i)) = p.resistance[i];
+    }
+    if (p.coupled()) out.coupled_resistance.block(3 * offset, 3 * offset, 3 * m, 3 * m) = p.coupled_resistance;
+    offset += m;
+  }
+}
+
 std::vector<double> HydrodynamicModel::save_state(const ModelState&) const { return {}; }
 
 void HydrodynamicModel::restore_state(ModelState&, const std::vector<double>& data, const BackgroundFlow&) const {

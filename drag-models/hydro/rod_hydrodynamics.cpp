@@ -93,6 +93,16 @@ void RodHydrodynamics::loads(const RodGeometry& rod, RodDrag& out) {
   model_->evaluate(rod, *flow_, out, state_.get());
 }
 
+void RodHydrodynamics::loads(const std::vector<RodGeometry>& rods, RodDrag& out) {
+  if (!model_) throw std::logic_error("RodHydrodynamics::loads before choose_model");
+  model_->evaluate_rods(rods, *flow_, out, state_.get());
+}
+
+double RodHydrodynamics::interaction_reach() const {
+  if (!model_) throw std::logic_error("RodHydrodynamics::interaction_reach before choose_model");
+  return model_->interaction_reach();
+}
+
 double RodHydrodynamics::explicit_drag_limit(const RodGeometry& rod, const std::vector<double>& masses) {
   RodDrag drag;
   loads(rod, drag);

@@ -102,6 +102,13 @@ class RodHydrodynamics {
   // Loads on this rod: F = driving - R v, torques (hydro/hydrodynamic_model.h).
   // Uses and advances the rod's state (keyed by rod.id) for models that keep one.
   void loads(const RodGeometry& rod, RodDrag& out);
+  // Loads on several rods stepped together (spheres rod after rod): coupled
+  // through the model's interaction between rods (level 3), else each alone
+  // and joined (HydrodynamicModel::evaluate_rods).
+  void loads(const std::vector<RodGeometry>& rods, RodDrag& out);
+  // Sphere-centre distance [m] within which the model couples two rods
+  // (0: no interaction between rods).
+  double interaction_reach() const;
   // Stability limit of integrating this rod's drag explicitly [s]
   // (hydro/explicit_drag_limit.h); masses [kg] per sphere.
   double explicit_drag_limit(const RodGeometry& rod, const std::vector<double>& masses);

@@ -30,8 +30,10 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
+#include <set>
 #include <string>
 #include <cmath>
 #include <cstdio>
@@ -61,11 +63,17 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       contacts_(0),
       warned_(false),
       bond_state_fresh_(true),
+      rod_contact_(false),
+      rod_friction_(-1.0),
+      rod_interaction_(true),
+      rod_contacts_(0),
+      rod_contact_force_(0.0),
       reported_(false),
       gather_(instance) {
   parse_keywords(narg, arg);
   if (bonds_id_.empty()) error->all(FLERR, "Illegal fix rod/implicit command: missing required keyword bonds");
   if (drag_id_.empty()) error->all(FLERR, "Illegal fix rod/implicit command: missing required keyword drag");
+  if (rod_friction_ < 0.0) rod_friction_ = wall_friction_;  // the rods' material: the wall friction coefficient
   if (limits_.adaptive && !guard_)
     error->all(FLERR, "fix rod/implicit: adaptive yes needs accuracy_guard yes (the substeps are the guard's)");
   // The partners must exist now (a script error is reported at its line);
@@ -82,8 +90,9 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
   // [1] largest displacement per step / d, [2] wall force [N], [3] rods touching walls,
   // [4] most substeps of the accuracy guard, [5] largest |bond axial strain|, [6] bond energy [J],
   // [7] substeps accepted with an unresolved Newton error (run total), [8] rods held at the box boundary,
-  // [9] substeps taken (run total over rods), [10] trial substeps rejected (run total over rods)
-  size_vector = 10;
+  // [9] substeps taken (run total over rods), [10] trial substeps rejected (run total over rods),
+  // [11] rods touching another rod (rod_contact), [12] sum of |rod-rod contact force| [N]
+  size_vector = 12;
   extvector = 0;
   global_freq = 1;
   restart_global = 1;  // the rods' wall-contact records
@@ -98,6 +107,9 @@ void FixRodImplicit::init() {
     std::snprintf(msg, sizeof(msg), "fix rod/implicit: timestep %g s must be finite and > 0 s", update->dt);
     error->all(FLERR, msg);
   }
+  if (force->pair && rod_contact_)
+    error->all(FLERR, "fix rod/implicit: rod_contact hertz and a pair style would both act between the rods' "
+                      "spheres (counted twice); remove the pair style or use rod_contact none");
   // No other integrator may move these atoms.
   for (int f = 0; f < modify->nfix; f++) {
     Fix *other = modify->fix[f];
@@ -118,6 +130,8 @@ void FixRodImplicit::init() {
 hsrod::OverdampedSolverStatistics FixRodImplicit::solver_statistics() const {
   hsrod::OverdampedSolverStatistics sum;
   for (const auto &entry : solvers_by_rod_) hsrod::accumulate(sum, entry.second.statistics());
+  for (const auto &entry : solvers_by_cluster_) hsrod::accumulate(sum, entry.second.statistics());
+  hsrod::accumulate(sum, retired_statistics_);
   return sum;
 }
 
@@ -150,6 +164,20 @@ void FixRodImplicit::setup(int) {
     if (screen) fputs(msg, screen);
     if (logfile) fputs(msg, logfile);
   }
+  const double reach = rod_interaction_ && drag_->hydrodynamics().has_model() ? drag_->hydrodynamics().interaction_reach()
+                                                                             : 0.0;
+  if (comm->me == 0 && (rod_contact_ || reach > 0.0)) {
+    char msg[512];
+    std::snprintf(msg, sizeof(msg),
+                  "fix rod/implicit: rods are stepped together (one joint implicit solve) while their spheres are "
+                  "within %s%s%s; rod_contact %s (friction %g)\n",
+                  rod_contact_ ? "contact reach" : "",
+                  rod_contact_ && reach > 0.0 ? " or " : "",
+                  reach > 0.0 ? ("the drag model's interaction reach " + std::to_string(reach) + " m").c_str() : "",
+                  rod_contact_ ? "hertz" : "none", rod_contact_ ? rod_friction_ : 0.0);
+    if (screen) fputs(msg, screen);
+    if (logfile) fputs(msg, logfile);
+  }
   if (force->pair && comm->me == 0)
     error->warning(FLERR, "fix rod/implicit: pair forces (rod-rod contacts) enter explicitly; keep the timestep "
                           "below the contact limit");
@@ -171,13 +199,24 @@ void FixRodImplicit::initial_integrate(int) {
   walls.gap_bottom = hydro.gap_bottom();
   walls.friction_coefficient = wall_friction_;
   walls.slip_velocity = slip_velocity_;
+  walls.rod_contact = rod_contact_;
+  walls.rod_friction_coefficient = rod_contact_ ? rod_friction_ : 0.0;
 
   double largest = 0.0, wall_force = 0.0;
   int contacts = 0, substeps = 1;
   stepped_rods_.clear();
+  // Rods that touch or interact hydrodynamically are stepped together
+  // (fix_rod_implicit_clusters.cpp, dynamics/rod_cluster.h); every proc
+  // holds every rod and finds the same clusters. A rod alone takes the
+  // step below.
+  const std::vector<std::vector<int>> clusters = step_clusters(gather);
+  std::set<int> jointly;
+  for (const std::vector<int> &cluster : clusters)
+    if (cluster.size() > 1) jointly.insert(cluster.begin(), cluster.end());
   for (const auto &entry : gather.rods) {
     const std::vector<GatheredSphere> &spheres = entry.second;
     const int n = static_cast<int>(spheres.size());
+    if (jointly.count(entry.first)) continue;
     if (held_rods_.count(entry.first)) {
       hold_rod(spheres);
       continue;
@@ -291,6 +330,27 @@ void FixRodImplicit::initial_integrate(int) {
       drag_->store_loads(i, drag.driving_force[k], result.hydrodynamic_forces[k], torque);
     }
   }
+  StepTotals totals;
+  joint_strain_ = joint_energy_ = 0.0;
+  for (const std::vector<int> &cluster : clusters)
+    if (cluster.size() > 1) step_cluster(gather, cluster, walls, totals);
+  largest = std::max(largest, totals.largest);
+  wall_force += totals.wall_force;
+  contacts += totals.contacts;
+  substeps = std::max(substeps, totals.substeps);
+  rod_contacts_ = totals.rod_contacts;
+  rod_contact_force_ = totals.rod_contact_force;
+  // Joint workspaces of clusters that no longer exist are dropped (a cache:
+  // a fresh one gives the same step), their statistics kept for the report.
+  for (auto it = solvers_by_cluster_.begin(); it != solvers_by_cluster_.end();) {
+    if (std::find(clusters.begin(), clusters.end(), it->first) != clusters.end()) {
+      ++it;
+      continue;
+    }
+    hsrod::accumulate(retired_statistics_, it->second.statistics());
+    guards_by_cluster_.erase(it->first);
+    it = solvers_by_cluster_.erase(it);
+  }
   ++cost_.steps;
   cost_.total_seconds += seconds_since(step_start);
   largest_displacement_ = largest;
@@ -331,5 +391,7 @@ double FixRodImplicit::compute_vector(int n) {
   if (n == 6) return unresolved_;
   if (n == 7) return static_cast<double>(held_rods_.size());
   if (n == 8) return static_cast<double>(substeps_taken_);
-  return static_cast<double>(trials_rejected_);
+  if (n == 9) return static_cast<double>(trials_rejected_);
+  if (n == 10) return rod_contacts_;
+  return rod_contact_force_;
 }

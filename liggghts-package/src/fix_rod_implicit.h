@@ -109,6 +109,28 @@ class FixRodImplicit : public Fix {
   hsrod::StepCost cost_;
   hsrod::OverdampedSolverStatistics solver_statistics_at_setup_;
   hsrod::OverdampedSolverStatistics solver_statistics() const;
+  // Several rods (issue 11): Hertz contact with regularised Coulomb friction
+  // between spheres of different rods inside the implicit step, and the
+  // model's hydrodynamic interaction between rods (level 3); rods that touch
+  // or interact are stepped together (fix_rod_implicit_clusters.cpp).
+  bool rod_contact_;              // rod_contact hertz (E, nu of the rods' material from fix rod/bonds)
+  double rod_friction_;           // Coulomb coefficient between rods [-] (default: wall_friction)
+  bool rod_interaction_;          // rod_interaction yes: the drag model couples nearby rods
+  int rod_contacts_;              // last step, rods touching another rod
+  double rod_contact_force_;      // last step, sum of |rod-rod Hertz force| [N]
+  std::map<std::vector<int>, hsrod::OverdampedRodSolver> solvers_by_cluster_;  // rods stepped together, by molecule IDs
+  std::map<std::vector<int>, hsrod::GuardWorkspace> guards_by_cluster_;
+  hsrod::OverdampedSolverStatistics retired_statistics_;  // of joint solvers dropped with their cluster
+  double joint_strain_ = 0.0, joint_energy_ = 0.0;  // last step, bond state of the rods stepped jointly [-], [J]
+  struct StepTotals {              // one step over all rods
+    double largest = 0.0, wall_force = 0.0, strain = 0.0, energy = 0.0, rod_contact_force = 0.0;
+    int contacts = 0, substeps = 1, rod_contacts = 0;
+  };
+  // Groups of molecule IDs stepped together (each a rod alone, or a cluster
+  // of rods within contact or hydrodynamic reach), the same on every proc.
+  std::vector<std::vector<int>> step_clusters(const RodGather &gather) const;
+  void step_cluster(const RodGather &gather, const std::vector<int> &molecules,
+                    const hsrod::WallContactParameters &walls, StepTotals &totals);
   bool reported_;                // set-up report printed once, not per run
   void resolve_partners();
   void parse_keywords(int narg, char **arg);  // fix_rod_implicit_keywords.cpp

@@ -66,12 +66,27 @@ void FixRodImplicit::check_whole_rods(const RodGather &gather) {
   }
   if (force->pair || gather.rods.size() < 2) return;
   const RodOverlap overlap = first_rod_overlap(gather.rods);
+  // With rod_contact, touching rods are the contact's business; rods placed
+  // into each other (centres closer than 0.8 of the contact distance: an
+  // overlap beyond 0.4 radii, 4x the guard's bound on a step's new overlap)
+  // are beyond what the Hertz law describes.
+  constexpr double deepest_contact = 0.8;  // [-]
+  if (rod_contact_ && overlap.rod_a >= 0 && overlap.distance_over_contact < deepest_contact) {
+    char msg[512];
+    std::snprintf(msg, sizeof(msg),
+                  "fix rod/implicit: rods %d and %d interpenetrate at step " BIGINT_FORMAT
+                  " (sphere centres %.3g of the contact distance apart, rod_contact accepts >= %.2g): place the "
+                  "rods apart; Hertz contact resolves touching rods, not rods inside each other",
+                  overlap.rod_a, overlap.rod_b, update->ntimestep, overlap.distance_over_contact, deepest_contact);
+    error->all(FLERR, msg);
+  }
+  if (rod_contact_) return;
   if (overlap.rod_a >= 0) {
     char msg[512];
     std::snprintf(msg, sizeof(msg),
                   "fix rod/implicit: rods %d and %d overlap at step " BIGINT_FORMAT
                   " (sphere centres %.3g of the contact distance apart) and no pair style handles rod-rod "
-                  "contact: they would pass through each other; define a pair style (e.g. pair gran) or keep "
+                  "contact: they would pass through each other; use fix rod/implicit's rod_contact hertz, or keep "
                   "the rods apart", overlap.rod_a, overlap.rod_b, update->ntimestep, overlap.distance_over_contact);
     error->all(FLERR, msg);
   }
@@ -81,7 +96,7 @@ void FixRodImplicit::check_whole_rods(const RodGather &gather) {
 // last step, evaluated when asked for (output steps), not every step.
 void FixRodImplicit::refresh_bond_state() {
   if (bond_state_fresh_) return;
-  double strain = 0.0, energy = 0.0;
+  double strain = joint_strain_, energy = joint_energy_;  // clusters: evaluated at their step
   for (int rod_id : stepped_rods_) {
     const auto strain_energy = hsrod::bond_strain_and_energy(scratch_by_rod_[rod_id].rod);
     strain = std::max(strain, strain_energy.first);

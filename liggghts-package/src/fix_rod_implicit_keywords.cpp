@@ -34,6 +34,16 @@ void FixRodImplicit::parse_keywords(int narg, char **arg) {
     } else if (strcmp(key, "slip_velocity") == 0) {
       slip_velocity_ = parse_number(error, "fix rod/implicit", key, val);
       if (!(slip_velocity_ > 0.0)) error->all(FLERR, "fix rod/implicit: slip_velocity must be > 0 m/s");
+    } else if (strcmp(key, "rod_contact") == 0) {
+      if (strcmp(val, "hertz") != 0 && strcmp(val, "none") != 0)
+        error->all(FLERR, "fix rod/implicit: rod_contact expects hertz or none");
+      rod_contact_ = strcmp(val, "hertz") == 0;
+    } else if (strcmp(key, "rod_friction") == 0) {
+      rod_friction_ = parse_number(error, "fix rod/implicit", key, val);
+      if (!(rod_friction_ >= 0.0 && rod_friction_ <= 10.0))
+        error->all(FLERR, "fix rod/implicit: rod_friction must be in [0, 10] (Coulomb coefficient between rods)");
+    } else if (strcmp(key, "rod_interaction") == 0) {
+      rod_interaction_ = parse_yes_no(error, "fix rod/implicit", key, val);
     } else if (strcmp(key, "max_displacement") == 0) {
       max_displacement_ = parse_number(error, "fix rod/implicit", key, val);
       if (!(max_displacement_ > 0.0 && max_displacement_ <= 10.0))
@@ -60,11 +70,11 @@ void FixRodImplicit::parse_keywords(int narg, char **arg) {
       if (!(limits_.max_substeps >= 1 && limits_.max_substeps <= 1 << 20))
         error->all(FLERR, "fix rod/implicit: max_substeps must be in [1, 1048576]");
     } else {
-      char msg[512];
+      char msg[640];
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix rod/implicit command: unknown keyword '%s' (expected bonds, drag, walls, "
-                    "wall_friction, slip_velocity, max_displacement, accuracy_guard, step_error, max_substeps, "
-                    "max_bond_strain, adaptive, tolerance)", key);
+                    "wall_friction, slip_velocity, rod_contact, rod_friction, rod_interaction, max_displacement, "
+                    "accuracy_guard, step_error, max_substeps, max_bond_strain, adaptive, tolerance)", key);
       error->all(FLERR, msg);
     }
   }

@@ -125,3 +125,48 @@ TEST(MpiRod, ImplicitPorePassageTwoRanksMatchOneRank) { expect_pore_passage_inde
 TEST(MpiRod, TwoWayPorePassageTwoRanksMatchOneRank) {
   expect_pore_passage_independent_of_ranks("twoway window_cells 2");
 }
+
+// Several rods (issue 11): two rods, one on each rank at the start, pushed
+// into contact across the rank boundary at x = 300 um, Hertz contact with
+// friction and level 3's hydrodynamic interaction between them; every rank
+// gathers both rods and steps them together, so 2 ranks equal 1.
+TEST(MpiRod, RodsInContactOnDifferentRanksMatchOneRank) {
+  const auto script = [](const std::string &processors) {
+    return std::vector<std::string>{
+        "units si", "atom_style hybrid granular molecular", "atom_modify map array sort 0 0", "boundary f f f",
+        "newton off", "processors " + processors, "communicate single cutoff 1e-5 vel yes",
+        "region box block 0 600e-6 0 200e-6 0 20e-6 units box", "create_box 1 box",
+        "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 297e-6 100e-6 10e-6 angle 0",
+        "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 306e-6 104e-6 10e-6 angle 20",
+        "group a molecule 1", "group b molecule 2",
+        "fix bonds all rod/bonds youngs_modulus 15e3 poisson_ratio 0.3",
+        "fix drag all hele_shaw/drag mean_velocity 0.03 model nonlocal",
+        "fix push_a a addforce 1e-9 0 0", "fix push_b b addforce -1e-9 0 0",
+        "fix step all rod/implicit bonds bonds drag drag rod_contact hertz rod_friction 0.5", "timestep 2e-6",
+        "run 200"};
+  };
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::vector<Eigen::Vector3d> parallel;
+  double touching = 0.0;
+  {
+    hsrod_test::LiggghtsSession s(MPI_COMM_WORLD);
+    s.commands(script("2 1 1"));
+    parallel = s.gather("x");
+    touching = s.fix("step")->compute_vector(10);
+  }
+  int ok = 1;
+  if (rank == 0) {
+    hsrod_test::LiggghtsSession s(MPI_COMM_SELF);
+    s.commands(script("1 1 1"));
+    const auto serial = s.gather("x");
+    double worst = 0.0;
+    for (size_t i = 0; i < serial.size(); i++) worst = std::max(worst, (parallel[i] - serial[i]).norm());
+    std::printf("two rods in contact, 2 ranks vs 1 rank: largest position difference %.3g m; rods touching %g\n",
+                worst, touching);
+    EXPECT_EQ(touching, 2.0);
+    EXPECT_LT(worst, 1e-9 * 3e-6);
+    ok = worst < 1e-9 * 3e-6 && touching == 2.0;
+  }
+  MPI_Bcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD);
+}

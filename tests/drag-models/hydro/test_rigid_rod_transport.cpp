@@ -179,3 +179,116 @@ TEST(RigidRodTransport, LocalRodReproducesResolvedRigidRods) {
   }
   EXPECT_GE(rods, 7) << "resolved rods of several lengths at two or more beta expected";
 }
+
+TEST(RigidRodTransport, Level3CouplesRodsAndTwoLoneSpheresAreOneUnbondedPair) {
+  // Several rods (issue 11): level 3's load on two rods of one sphere each
+  // is, term by term, its load on one two-sphere rod (the Green's function
+  // does not see bonds); local levels do not couple rods.
+  const hsrod_test::UniformStream stream;
+  const auto m = model("nonlocal", 0.15);
+  const RodGeometry two = straight_rod(2, kD, kPi / 2);
+  RodGeometry a, b;
+  a.sphere_diameter = b.sphere_diameter = kD;
+  a.positions = {two.positions[0]};
+  b.positions = {two.positions[1]};
+  a.id = 1;
+  b.id = 2;
+  RodDrag two_rods, pair;
+  m->evaluate_rods({a, b}, stream, two_rods, nullptr);
+  m->evaluate(two, stream, pair);
+  ASSERT_TRUE(two_rods.coupled());
+  EXPECT_EQ(two_rods.coupled_resistance, pair.coupled_resistance);
+  for (int i = 0; i < 2; ++i) EXPECT_EQ(two_rods.driving_force[i], pair.driving_force[i]);
+  EXPECT_GT(m->interaction_reach(), 10 * (kD / 0.15) / std::sqrt(12.0) * 0.999);
+  const auto local = model("local", 0.15);
+  EXPECT_EQ(local->interaction_reach(), 0.0);
+  RodDrag apart;
+  local->evaluate_rods({a, b}, stream, apart, nullptr);
+  RodDrag alone;
+  local->evaluate(a, stream, alone);
+  EXPECT_EQ(apart.driving_force[0], alone.driving_force[0]);
+}
+
+TEST(RigidRodTransport, Level3ShieldingOfTwoLoneSpheresAgainstTheResolvedPair) {
+  // Two rods of one sphere side by side, touching, held in the stream: each
+  // carries less load than a sphere alone (shielding). Independent
+  // reference: the resolved rigid pair of the campaign (resolved_campaign_series.csv,
+  // n = 2 against n = 1: the load per sphere of two touching spheres over a
+  // lone sphere's; the pair is the limit of two one-sphere rods). Across
+  // the flow (D_perp) and along it (D_par), beta 0.15 and 0.3.
+  const hsrod_test::UniformStream stream;  // U_mean = 1 m/s
+  const auto rows = resolved_rods(std::string(HSROD_TEST_DATA_DIR) + "/../../../calibration/data/resolved_campaign_series.csv");
+  int compared = 0;
+  for (double beta : {0.15, 0.3}) {
+    const ResolvedRod *one = nullptr, *two = nullptr;
+    for (const auto& s : rows) {
+      if (s.beta != beta || s.spacing != 1.0) continue;
+      if (s.n == 1) one = &s;
+      if (s.n == 2) two = &s;
+    }
+    ASSERT_TRUE(one && two) << "beta " << beta;
+    const auto m = model("nonlocal", beta);
+    RodDrag lone;
+    m->evaluate(straight_rod(1, kD, 0.0), stream, lone);
+    for (const double theta : {0.0, kPi / 2}) {
+      const bool across = theta == kPi / 2;
+      const RodGeometry pair = straight_rod(2, kD, theta);
+      RodGeometry a, b;
+      a.sphere_diameter = b.sphere_diameter = kD;
+      a.positions = {pair.positions[0]};
+      b.positions = {pair.positions[1]};
+      RodDrag both;
+      m->evaluate_rods({a, b}, stream, both, nullptr);
+      const double model_ratio = 0.5 * (both.driving_force[0].x() + both.driving_force[1].x()) / lone.driving_force[0].x();
+      const std::string key = across ? "D_perp" : "D_par";
+      const double resolved_ratio = 0.5 * two->q.at(key) / one->q.at(key);
+      std::printf("beta %.2f pair %s the flow: load per sphere / lone sphere: level 3 %.4f, resolved %.4f (%+.1f %%)\n",
+                  beta, across ? "across" : "along", model_ratio, resolved_ratio,
+                  100 * (model_ratio / resolved_ratio - 1));
+      EXPECT_LT(model_ratio, 0.99) << "shielding";
+      EXPECT_LT(resolved_ratio, 0.99);
+      // The interaction brings each rod's load closer to the resolved pair
+      // than rods that ignore each other (ratio 1). Level 3 still misses part
+      // of the shielding of touching spheres (DESIGN.md: the depth-averaged
+      // Green's function misses the 3-D shielding below spacings ~H; loads
+      // of chains 35-60 % too high at beta 0.15): measured +6..+17 % here.
+      EXPECT_LT(std::fabs(model_ratio - resolved_ratio), std::fabs(1.0 - resolved_ratio))
+          << "beta " << beta << (across ? " across" : " along");
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 4);
+}
+
+TEST(RigidRodTransport, Level3TwoRodsAcrossTheFlowShieldEachOther) {
+  // Two 10-sphere rods across the flow (along y), one behind the other at
+  // centre distance s along x, held in the stream: level 3 lowers each
+  // rod's load (the leading rod's too: the trailing one's obstruction slows
+  // the flow in front of it), less with distance, and not at all beyond the
+  // interaction reach, where evaluate_rods is each rod alone.
+  const hsrod_test::UniformStream stream;
+  const auto m = model("nonlocal", 0.15);
+  RodDrag alone;
+  m->evaluate(straight_rod(10, kD, kPi / 2), stream, alone);
+  double load_alone = 0.0;
+  for (const auto& f : alone.driving_force) load_alone += f.x();
+  double previous = 0.0;
+  for (const double s : {2.0, 5.0, 20.0}) {
+    RodGeometry lead = straight_rod(10, kD, kPi / 2), trail = straight_rod(10, kD, kPi / 2);
+    for (auto& x : trail.positions) x.x() -= s * kD;
+    RodDrag both;
+    m->evaluate_rods({lead, trail}, stream, both, nullptr);
+    double lead_load = 0.0, trail_load = 0.0;
+    for (int i = 0; i < 10; ++i) {
+      lead_load += both.driving_force[i].x();
+      trail_load += both.driving_force[10 + i].x();
+    }
+    std::printf("two rods across the flow %g d apart: load / alone: leading %.4f, trailing %.4f\n", s,
+                lead_load / load_alone, trail_load / load_alone);
+    EXPECT_LT(lead_load, load_alone);
+    EXPECT_LT(trail_load, load_alone);
+    EXPECT_GT(lead_load / load_alone, previous) << "shielding weakens with distance";
+    previous = lead_load / load_alone;
+  }
+  EXPECT_LT(previous, 1.0);
+}

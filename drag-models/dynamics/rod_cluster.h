@@ -1,0 +1,39 @@
+// Several rods in one scene (issue 11, item 5): which rods are stepped
+// together.
+//
+// The implicit step (overdamped_rod_step.h) solves one rod's spheres at once.
+// Two rods that touch, or that the drag model couples hydrodynamically
+// (level 3), must be solved together: a Hertz contact between two rods is
+// as stiff as one with a wall (2 E* sqrt(R* delta) ~ 1 N/m against a drag
+// of ~3e-8 N s/m per sphere: a relaxation time ~3e-8 s, 100x below the
+// step), so treating the partner's position as given (lagged, or iterated
+// rod by rod) is an explicit coupling that diverges at the implicit step,
+// or converges only at a rate ~ k dt / (k dt + zeta) -> 1. The rods of a
+// cluster are therefore merged into one OverdampedRod (spheres rod after
+// rod, OverdampedRod::rod_of_sphere) and stepped by one solve in which the
+// contact's stiffness and friction couple both rods exactly as a rod's
+// self-contact couples its own spheres; a rod with no partner within reach
+// is stepped alone, as before.
+#pragma once
+
+#include "dynamics/overdamped_rod_step.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace hsrod {
+
+// Groups of rods (indices into `rods`, each group ascending, groups ordered
+// by their first rod) whose spheres come within `reach` [m] of each other
+// (centre distance), joined transitively: rods a, b are in one group when a
+// chain of rods, each within reach of the next, links them. A rod alone is
+// a group of one. Found through a cell list over all spheres (O(N log N)).
+std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::Vector3d>>& rods, double reach);
+
+// The rods as one OverdampedRod to step together: spheres rod after rod,
+// bonds re-indexed, rod_of_sphere set (k for the spheres of rods[k]).
+// (fix rod/implicit builds the same from the gathered spheres by tag.)
+OverdampedRod merge_rods(const std::vector<OverdampedRod>& rods);
+
+}  // namespace hsrod

@@ -1,0 +1,216 @@
+/* ----------------------------------------------------------------------
+   hsrod - fix rod/implicit (see fix_rod_implicit.h): the step of each rod,
+   or of rods stepped together. Rods whose spheres come within contact
+   reach (rod_contact hertz) or within the drag model's interaction reach
+   (rod_interaction yes, level 3) form a cluster (dynamics/rod_cluster.h:
+   why one joint solve and not rod by rod); a cluster's rods are merged
+   into one OverdampedRod (spheres rod after rod, bonds by tag) and take one
+   guarded implicit step with their joint drag. A rod with no partner takes
+   exactly the step it took before rods could interact.
+------------------------------------------------------------------------- */
+
+#include "fix_rod_implicit.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_hele_shaw_drag.h"
+#include "fix_rod_bonds.h"
+#include "lmptype.h"
+#include "rod_accounting.h"
+#include "rod_assembly.h"
+#include "rod_gather.h"
+#include "update.h"
+
+#include "dynamics/rod_cluster.h"
+#include "hydro/rod_hydrodynamics.h"
+#include "rod/rod_bond_set.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+using namespace LAMMPS_NS;
+
+std::vector<std::vector<int>> FixRodImplicit::step_clusters(const RodGather &gather) const {
+  std::vector<int> molecules;  // rods that move (held rods stay put, alone)
+  std::vector<std::vector<Eigen::Vector3d>> positions;
+  double largest_radius = 0.0, fastest = 0.0;
+  for (const auto &entry : gather.rods) {
+    if (held_rods_.count(entry.first)) continue;
+    molecules.push_back(entry.first);
+    positions.emplace_back();
+    for (const GatheredSphere &s : entry.second) {
+      positions.back().push_back(s.position);
+      largest_radius = std::max(largest_radius, s.radius);
+      fastest = std::max(fastest, s.velocity.norm());
+    }
+  }
+  // Contact reach: touching now, or able to touch within the step (each rod
+  // moving max_displacement diameters or twice its last step's travel).
+  double reach = 0.0;
+  if (rod_contact_)
+    reach = 2.0 * largest_radius + 2.0 * std::max(2.0 * max_displacement_ * largest_radius, 2.0 * fastest * update->dt);
+  if (rod_interaction_) reach = std::max(reach, drag_->hydrodynamics().interaction_reach());
+  std::vector<std::vector<int>> clusters;
+  for (const std::vector<int> &members : hsrod::rod_clusters(positions, reach)) {
+    clusters.emplace_back();
+    for (int k : members) clusters.back().push_back(molecules[k]);
+  }
+  for (int held : held_rods_)
+    if (gather.rods.count(held)) clusters.push_back({held});
+  return clusters;
+}
+
+void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int> &molecules,
+                                  const hsrod::WallContactParameters &walls, StepTotals &totals) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  hsrod::RodHydrodynamics &hydro = drag_->hydrodynamics();
+  const int first = molecules.front();
+  if (held_rods_.count(first)) {
+    hold_rod(gather.rods.at(first));
+    return;
+  }
+  const bool joint = molecules.size() > 1;
+  // The cluster's spheres rod after rod, and which rod each belongs to.
+  std::vector<GatheredSphere> spheres;
+  std::vector<int> rod_of_sphere;
+  for (std::size_t r = 0; r < molecules.size(); ++r) {
+    const std::vector<GatheredSphere> &rod_spheres = gather.rods.at(molecules[r]);
+    spheres.insert(spheres.end(), rod_spheres.begin(), rod_spheres.end());
+    rod_of_sphere.insert(rod_of_sphere.end(), rod_spheres.size(), static_cast<int>(r));
+  }
+  const int n = static_cast<int>(spheres.size());
+  const double dt = update->dt;
+  hsrod::OverdampedRod rod = overdamped_rod(spheres, bonds_->bond_set());
+  if (joint) rod.rod_of_sphere = rod_of_sphere;
+  // Wall friction is linearised about the velocities of the last step
+  // (this fix set them: v = dx/dt).
+  for (const auto &sphere : spheres) {
+    rod.velocities.push_back(sphere.velocity);
+    rod.angular_velocities.push_back(sphere.angular_velocity);
+  }
+  std::vector<hsrod::RodGeometry> geometries;
+  for (int molecule : molecules) geometries.push_back(rod_geometry(hydro, molecule, gather.rods.at(molecule)));
+  const auto evaluate = [&](const std::vector<Eigen::Vector3d> &at, hsrod::RodDrag &out) {
+    const Clock::time_point drag_start = Clock::now();
+    std::size_t offset = 0;
+    for (hsrod::RodGeometry &g : geometries) {
+      std::copy(at.begin() + offset, at.begin() + offset + g.positions.size(), g.positions.begin());
+      offset += g.positions.size();
+    }
+    if (joint) hydro.loads(geometries, out);
+    else hydro.loads(geometries.front(), out);
+    cost_.drag_seconds += seconds_since(drag_start);
+  };
+  hsrod::RodDrag drag;
+  evaluate(rod.positions, drag);
+  cost_.sphere_steps += n;
+
+  std::string name = "rod " + std::to_string(first);
+  for (std::size_t r = 1; r < molecules.size(); ++r) name += (r == 1 ? " (with rods " : ", ") + std::to_string(molecules[r]);
+  if (joint) name += ", stepped together)";
+  const std::vector<Eigen::Vector3d> before = rod.positions;
+  // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
+  const hsrod::ChannelGeometry *scene_walls = walls_ ? &hydro.geometry() : nullptr;
+  hsrod::OverdampedRodSolver &solver = joint ? solvers_by_cluster_[molecules] : solvers_by_rod_[first];
+  hsrod::OverdampedStepResult result;
+  if (guard_) {
+    // Accuracy guard: substeps (drag re-evaluated at each) or a refusal.
+    auto drag_at = [&](const hsrod::OverdampedRod &moved, hsrod::RodDrag &out) { evaluate(moved.positions, out); };
+    try {
+      hsrod::GuardedStepReport report =
+          hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_,
+                                  joint ? guards_by_cluster_[molecules] : guards_by_rod_[first]);
+      result = std::move(report.result);
+      if (report.unresolved_substeps > 0 && !unresolved_warned_ && comm->me == 0) {
+        char msg[640];
+        std::snprintf(msg, sizeof(msg),
+                      "fix rod/implicit: %s at step " BIGINT_FORMAT ": %d substep(s) of dt/%d still differ from "
+                      "two half steps by %.3g of their displacement (step_error %.3g): accepted as the half steps; "
+                      "the motion is not resolved here (contact or buckling); reduce the timestep to check",
+                      name.c_str(), update->ntimestep, report.unresolved_substeps, limits_.max_substeps,
+                      report.unresolved_error, limits_.max_step_error);
+        error->warning(FLERR, msg);
+        unresolved_warned_ = true;
+      }
+      unresolved_ += report.unresolved_substeps;
+      substeps_taken_ += report.substeps;
+      trials_rejected_ += report.rejected_trials;
+      totals.substeps = std::max(totals.substeps, report.substeps);
+    } catch (const std::exception &e) {
+      char msg[896];
+      std::snprintf(msg, sizeof(msg), "fix rod/implicit: %s at step " BIGINT_FORMAT ": %s", name.c_str(),
+                    update->ntimestep, e.what());
+      error->all(FLERR, msg);
+    }
+  } else {
+    result = solver.step(rod, drag, dt, scene_walls, &walls);
+  }
+  // The cluster's bond state now (the merged rod is not kept for later).
+  const auto strain_energy = hsrod::bond_strain_and_energy(rod);
+  joint_strain_ = std::max(joint_strain_, strain_energy.first);
+  joint_energy_ += strain_energy.second;
+  // A step that would carry a sphere centre out of the box (the outlet,
+  // or any non-periodic face) is not taken: the rod (with the rods stepped
+  // with it) is held where it is, whole, instead of LIGGGHTS dropping its
+  // spheres one by one.
+  const int face = leaving_face(rod.positions, domain->boxlo, domain->boxhi, domain->periodicity);
+  if (face >= 0) {
+    held_rods_.insert(molecules.begin(), molecules.end());
+    if (comm->me == 0) {
+      char msg[480];
+      std::snprintf(msg, sizeof(msg),
+                    "fix rod/implicit: %s reached the box's %s face at step " BIGINT_FORMAT
+                    " (t = %g s): its next step would carry a sphere out of the box; the rod is held there, "
+                    "whole, from then on (measures stay at its exit)\n", name.c_str(), face_name(face),
+                    update->ntimestep, update->get_cur_time());
+      if (screen) fputs(msg, screen);
+      if (logfile) fputs(msg, logfile);
+    }
+    hold_rod(spheres);
+    return;
+  }
+  totals.largest = std::max(totals.largest, result.largest_displacement / geometries.front().sphere_diameter);
+  totals.wall_force += result.wall_force;
+  totals.rod_contact_force += result.rod_contact_force;
+  // Contact records per rod (a cluster's result is over all its spheres).
+  std::size_t offset = 0;
+  for (std::size_t r = 0; r < molecules.size(); ++r) {
+    const std::size_t size = gather.rods.at(molecules[r]).size();
+    double rod_wall_force = result.wall_force;
+    bool touching = result.wall_contact;
+    if (joint) {
+      rod_wall_force = 0.0;
+      for (std::size_t k = offset; k < offset + size; ++k) rod_wall_force += result.sphere_wall_force[k];
+      touching = rod_wall_force > 0.0;
+    }
+    if (touching) totals.contacts++;
+    RodContactRecord &record = contacts_by_rod_[molecules[r]];
+    record.touching = touching;
+    record.ever_touched = record.ever_touched || touching;
+    record.wall_force = rod_wall_force;
+    record.largest_wall_force = std::max(record.largest_wall_force, rod_wall_force);
+    offset += size;
+  }
+  if (result.rod_contact) totals.rod_contacts += static_cast<int>(molecules.size());
+
+  for (int k = 0; k < n; k++) {
+    const int i = atom->map(spheres[k].tag);
+    if (i < 0 || i >= atom->nlocal) continue;
+    const Eigen::Vector3d dx = rod.positions[k] - before[k];
+    for (int a = 0; a < 3; a++) {
+      atom->x[i][a] += dx[a];
+      atom->v[i][a] = result.velocities[k][a];
+      atom->omega[i][a] = result.angular_velocities[k][a];
+    }
+    bonds_->set_orientation(i, rod.orientations[k]);
+    // The load at the step's new velocities: F = d - R v, T = t - r omega.
+    const Eigen::Vector3d torque = drag.driving_torque[k] - drag.rotational_resistance[k] * result.angular_velocities[k];
+    drag_->store_loads(i, drag.driving_force[k], result.hydrodynamic_forces[k], torque);
+  }
+}

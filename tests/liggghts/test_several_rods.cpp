@@ -1,0 +1,101 @@
+// Several rods in one scene (issue 11, item 5) through fix rod/implicit:
+// rods pressed together by opposite forces stop at the Hertz overlap of
+// the force (rod_contact hertz; Johnson 1985, eq. 4.22 for two equal
+// spheres), rods far apart move bit for bit as each alone, and rods that
+// overlap without rod_contact are refused (bad-input test
+// rods_overlap_no_pair).
+#include "liggghts_session.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr double kD = 3e-6, kLoad = 1e-9;  // sphere diameter [m], push per sphere [N]
+
+// Two 10-sphere rods across the flow (along y) in a straight channel of the
+// pore scene's size, 6.5 um apart in x, pushed towards each other by kLoad
+// per sphere (fix addforce), level 2 (equal drag on both rods, so the
+// contact carries exactly the push once they rest on each other).
+std::vector<std::string> pressed_rods(const std::string &contact, const std::string &model,
+                                      const std::string &processors = "1 1 1") {
+  return {"units si", "atom_style hybrid granular molecular", "atom_modify map array sort 0 0", "boundary f f f",
+          "newton off", "processors " + processors, "communicate single cutoff 1e-5 vel yes",
+          "region box block 0 600e-6 0 200e-6 0 20e-6 units box", "create_box 1 box",
+          "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 297e-6 100e-6 10e-6 angle 0",
+          "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 303.5e-6 100e-6 10e-6 angle 0",
+          "group a molecule 1", "group b molecule 2",
+          "fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3",
+          "fix drag all hele_shaw/drag mean_velocity 0.03 model " + model,
+          "fix push_a a addforce " + hsrod_test::num(kLoad) + " 0 0",
+          "fix push_b b addforce " + hsrod_test::num(-kLoad) + " 0 0",
+          "fix step all rod/implicit bonds bonds drag drag " + contact, "timestep 2e-6", "run 300"};
+}
+
+}  // namespace
+
+TEST(SeveralRods, RodsPressedTogetherRestAtTheHertzOverlap) {
+  hsrod_test::LiggghtsSession s;
+  s.commands(pressed_rods("rod_contact hertz rod_friction 0.5", "local"));
+  const auto x = s.gather("x");
+  ASSERT_EQ(x.size(), 20u);
+  // F = 4/3 E_p sqrt(r/2) delta^(3/2), E_p = E / (2 (1 - nu^2)).
+  const double pair_modulus = 15e6 / (2.0 * (1.0 - 0.09));
+  const double hertz = std::pow(3.0 * kLoad / (4.0 * pair_modulus * std::sqrt(0.25 * kD)), 2.0 / 3.0);
+  for (int i = 0; i < 10; i++) {
+    const double overlap = kD - (x[i] - x[10 + i]).norm();
+    EXPECT_NEAR(overlap, hertz, 2e-3 * hertz) << "sphere pair " << i;
+  }
+  LAMMPS_NS::Fix *step = s.fix("step");
+  std::printf("pressed rods: Hertz overlap %.4e m, pair 0 %.4e m; rods touching %g, contact force %.6e N\n", hertz,
+              kD - (x[0] - x[10]).norm(), step->compute_vector(10), step->compute_vector(11));
+  EXPECT_EQ(step->compute_vector(10), 2.0);
+  EXPECT_NEAR(step->compute_vector(11), 10 * kLoad, 2e-3 * 10 * kLoad);
+}
+
+TEST(SeveralRods, RodsFarApartMoveBitForBitAsEachAlone) {
+  // Level 3 couples rods only within its interaction reach (~0.1 mm here):
+  // two rods 150 um apart across the channel, each also run alone.
+  const auto scene = [](bool first, bool second) {
+    std::vector<std::string> lines = {
+        "units si", "atom_style hybrid granular molecular", "atom_modify map array sort 0 0", "boundary f f f",
+        "newton off", "communicate single cutoff 1e-5 vel yes",
+        "region box block 0 600e-6 0 200e-6 0 20e-6 units box", "create_box 1 box"};
+    if (first) lines.push_back("create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 150e-6 25e-6 10e-6 angle 30 mol 1");
+    if (second) lines.push_back("create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 150e-6 175e-6 10e-6 angle 60 mol 2");
+    for (const char *l : {"fix bonds all rod/bonds youngs_modulus 15e3 poisson_ratio 0.3",
+                          "fix drag all hele_shaw/drag mean_velocity 0.03 model nonlocal",
+                          "fix step all rod/implicit bonds bonds drag drag rod_contact hertz", "timestep 2e-6",
+                          "run 200"})
+      lines.push_back(l);
+    return lines;
+  };
+  std::vector<Eigen::Vector3d> both, first, second;
+  {
+    hsrod_test::LiggghtsSession s;
+    s.commands(scene(true, true));
+    both = s.gather("x");
+  }
+  {
+    hsrod_test::LiggghtsSession s;
+    s.commands(scene(true, false));
+    first = s.gather("x");
+  }
+  {
+    hsrod_test::LiggghtsSession s;
+    s.commands(scene(false, true));
+    second = s.gather("x");
+  }
+  ASSERT_EQ(both.size(), 20u);
+  for (int i = 0; i < 10; i++) {
+    EXPECT_EQ(both[i], first[i]) << "rod 1 sphere " << i;
+    EXPECT_EQ(both[10 + i], second[i]) << "rod 2 sphere " << i;
+  }
+  double centre_x = 0.0;
+  for (int i = 0; i < 10; i++) centre_x += both[i].x() / 10;
+  EXPECT_GT(centre_x, 155e-6) << "rod 1 was carried downstream";
+}

@@ -32,17 +32,79 @@ import sys
 import numpy as np
 
 
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def repo_path(path):
+    """`path` relative to the repository when inside it (provenance that
+    does not name this machine's checkout)."""
+    p = os.path.abspath(path)
+    return os.path.relpath(p, ROOT) if p.startswith(ROOT + os.sep) else p
+
+
+RECORD_CSV, RECORD_PLAN, RECORD_PROVENANCE = "per_sphere_record.csv", "plan.json", "provenance.json"
+
+
 def load_results(out):
+    """The finished cases of campaign directory `out`: its per-case JSON
+    files (results/*.json), plus the cases it holds only as a per-sphere
+    record (load_recorded) that have no JSON file."""
     res = []
     for f in sorted(glob.glob(os.path.join(out, "results", "*.json"))):
         with open(f) as fh:
             r = json.load(fh)
         if r.get("schema") == "hsrod-campaign-case 1":
+            r["source"] = repo_path(f)
             res.append(r)
+    if os.path.exists(os.path.join(out, RECORD_CSV)):
+        have = {r["id"] for r in res}
+        res += [r for r in load_recorded(out) if r["id"] not in have]
     return res
 
 
+def load_recorded(out):
+    """Cases recorded only as per-sphere coefficients (OUT/per_sphere_record.csv,
+    the per-sphere CSV this module writes), with the plan that made them
+    (OUT/plan.json) and their provenance (OUT/provenance.json). Each case id
+    must be the plan's id of the same case: the id holds a hash of every case
+    parameter, so a match proves the spec (d, U, mu, mesh, control) that the
+    record itself does not store. Returned in the form of load_results, with
+    the coefficients instead of the forces."""
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import hsrod_campaign  # noqa: E402  (same directory)
+    with open(os.path.join(out, RECORD_PLAN)) as f:
+        specs = {c["id"]: c for c in hsrod_campaign.expand(json.load(f))}
+    with open(os.path.join(out, RECORD_PROVENANCE)) as f:
+        prov = json.load(f)
+    source = repo_path(os.path.join(out, RECORD_CSV))
+    cases = {}
+    with open(os.path.join(out, RECORD_CSV)) as f:
+        for row in csv.DictReader(l for l in f if not l.startswith("#")):
+            cid = row["case"]
+            if cid not in specs:
+                sys.exit("campaign_analysis: recorded case %s is not a case of %s" % (cid, os.path.join(out, RECORD_PLAN)))
+            spec = specs[cid]
+            if (abs(float(row["beta"]) - spec["beta"]) > 1e-9 or int(row["n"]) != spec["n"] or row["load"] != spec["load"]
+                    or int(row["cells_per_diameter"]) != spec["cells_per_diameter"]):
+                sys.exit("campaign_analysis: recorded case %s disagrees with its plan" % cid)
+            r = cases.setdefault(cid, {
+                "schema": "hsrod-campaign-case 1", "id": cid, "spec": spec, "recorded": True, "source": source,
+                "mesh": {"cells": int(row["cells"]), "cells_per_diameter": spec["cells_per_diameter"]},
+                "run": {"iterations": int(row["iterations"]), "cpu_s": float(row["cpu_s"])},
+                "spheres": [], "coefficients": ([], [], []),
+                "provenance": {k: prov[k] for k in ("solver_sha256", "git_commits", "host")}})
+            r["spheres"].append({"id": int(row["sphere"]), "x": [float(row["x_over_d"]) * spec["d"], 0.0, 0.0]})
+            for k, col in enumerate(("par", "perp", "torque_z")):
+                r["coefficients"][k].append(float(row[col]))
+    for r in cases.values():
+        if len(r["spheres"]) != r["spec"]["n"]:
+            sys.exit("campaign_analysis: recorded case %s has %d of %d spheres" % (r["id"], len(r["spheres"]), r["spec"]["n"]))
+    return list(cases.values())
+
+
 def per_sphere(r):
+    if "coefficients" in r:  # a recorded case (load_recorded)
+        return tuple(np.array(c) for c in r["coefficients"])
     s = r["spec"]
     z0 = 3 * math.pi * s["mu"] * s["d"]
     a = math.radians(s["flow_angle_deg"])
@@ -192,10 +254,45 @@ def write_profiles(summ, path):
                                                               (i - 0.5 * (n - 1)) * sp, v))
 
 
-def collect(out, csv_path, json_path=None, points_path=None, series_path=None, profiles_path=None):
-    results = load_results(out)
+def write_mesh_convergence(summ, path):
+    """Mesh convergence of every series (markdown): each quantity on every
+    mesh, the change from the next coarser mesh and Richardson's p = 2 value."""
+    with open(path, "w") as f:
+        f.write("# Mesh convergence of the resolved campaign (campaign_analysis.py)\n\n"
+                "Per series (beta, N, spacing / d): each quantity at d/h = 6, 8 (10), the relative change "
+                "between the two finest meshes (the uncertainty the fit uses) and the p = 2 Richardson value's "
+                "distance from the finest mesh. R: friction / (3 pi mu d), D: held load / (3 pi mu d U), "
+                "lambda = D / R, r = lambda_perp / lambda_par.\n\n")
+        f.write("| beta | N | s/d | quantity | by mesh | change | Richardson - finest |\n|---|---|---|---|---|---|---|\n")
+        for rec in summ:
+            for name in ("R_par", "R_perp", "lambda_par", "lambda_perp", "r"):
+                if rec["n"] == 1 and name in ("R_perp", "lambda_perp", "r"):
+                    continue
+                q = rec["quantities"][name]
+                if len(q["by_mesh"]) < 2:
+                    continue
+                est = q["estimate"]
+                f.write("| %g | %d | %g | %s | %s | %+.3f %% | %+.3f %% |\n" % (
+                    rec["beta"], rec["n"], rec["spacing"], name,
+                    " / ".join("%d: %.5f" % (m, v) for m, v in sorted(q["by_mesh"].items())),
+                    100 * q["uncertainty"] / abs(est), 100 * (q["richardson_p2"] - est) / abs(est)))
+
+
+def collect(outs, csv_path, json_path=None, points_path=None, series_path=None, profiles_path=None,
+            mesh_path=None):
+    """Every finished case of the campaign directories `outs` (a case in two
+    directories counts once, the first one's) into the per-sphere CSV and the
+    optional summaries."""
+    if isinstance(outs, str):
+        outs = [outs]
+    results, seen = [], set()
+    for out in outs:
+        for r in load_results(out):
+            if r["id"] not in seen:
+                seen.add(r["id"])
+                results.append(r)
     if not results:
-        sys.exit("campaign_analysis: no finished cases in %s" % out)
+        sys.exit("campaign_analysis: no finished cases in %s" % ", ".join(outs))
     rows = []
     for r in results:
         s = r["spec"]
@@ -203,28 +300,44 @@ def collect(out, csv_path, json_path=None, points_path=None, series_path=None, p
         for i, sp in enumerate(r["spheres"]):
             rows.append([s["beta"], s["n"], s["spacing"], s["load"], s["cells_per_diameter"], i + 1,
                          "%.6g" % (sp["x"][0] / s["d"]), "%.8g" % par[i], "%.8g" % perp[i], "%.8g" % tz[i],
-                         r["mesh"]["cells"], r["run"]["iterations"], r["run"]["cpu_s"], s["role"], r["id"]])
+                         r["mesh"]["cells"], r["run"]["iterations"], r["run"]["cpu_s"], s["role"], r["id"],
+                         r["source"]])
     os.makedirs(os.path.dirname(os.path.abspath(csv_path)), exist_ok=True)
     with open(csv_path, "w", newline="") as f:
         f.write("# resolved rodIbFoam campaign (calibration/tools/hsrod_campaign.py), per sphere; "
-                "coefficients over 3 pi mu d U (torque over 3 pi mu d^2 U); see campaign_analysis.py\n")
+                "coefficients over 3 pi mu d U (torque over 3 pi mu d^2 U); see campaign_analysis.py; "
+                "source: the case's result JSON or the per-sphere record it was kept in (calibration/campaign/README.md)\n")
         w = csv.writer(f)
         w.writerow(["beta", "n", "spacing_over_d", "load", "cells_per_diameter", "sphere", "x_over_d",
-                    "par", "perp", "torque_z", "cells", "iterations", "cpu_s", "role", "case"])
+                    "par", "perp", "torque_z", "cells", "iterations", "cpu_s", "role", "case", "source"])
         w.writerows(rows)
     summ = summarise(series_table(results))
     if json_path:
-        prov = results[0]["provenance"]
+        sources = {}
+        for r in results:
+            src = sources.setdefault(os.path.dirname(r["source"]) if not r.get("recorded") else r["source"], {
+                "cases": 0, "cpu_s": 0.0, "solver_sha256": set(), "git_commits": set(), "hosts": set(),
+                "recorded_only": bool(r.get("recorded"))})
+            src["cases"] += 1
+            src["cpu_s"] += r["run"]["cpu_s"]
+            pv = r["provenance"]
+            src["solver_sha256"] |= set([pv["solver_sha256"]] if isinstance(pv["solver_sha256"], str) else pv["solver_sha256"])
+            src["git_commits"] |= set([pv["git_commit"]] if "git_commit" in pv else pv["git_commits"])
+            src["hosts"].add(pv["host"])
+        for v in sources.values():
+            for k in ("solver_sha256", "git_commits", "hosts"):
+                v[k] = sorted(v[k])
+            v["cpu_s"] = round(v["cpu_s"], 1)
         with open(json_path, "w") as f:
-            json.dump({"schema": "hsrod-campaign-summary 1", "cases": len(results),
-                       "solver_sha256": sorted({r["provenance"]["solver_sha256"] for r in results}),
-                       "git_commits": sorted({r["provenance"]["git_commit"] for r in results}),
-                       "host": prov["host"], "total_cpu_s": round(sum(r["run"]["cpu_s"] for r in results), 1),
+            json.dump({"schema": "hsrod-campaign-summary 2", "cases": len(results), "sources": sources,
+                       "total_cpu_s": round(sum(r["run"]["cpu_s"] for r in results), 1),
                        "series": summ}, f, indent=1)
     if series_path:
         write_series(summ, series_path)
     if profiles_path:
         write_profiles(summ, profiles_path)
+    if mesh_path:
+        write_mesh_convergence(summ, mesh_path)
     if points_path:
         with open(points_path, "w") as f:
             f.write("# points for hsrod_fit_campaign (campaign_analysis.py from %d resolved cases)\n" % len(results))
@@ -249,11 +362,13 @@ def collect(out, csv_path, json_path=None, points_path=None, series_path=None, p
 if __name__ == "__main__":
     import argparse
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("out", help="campaign directory (hsrod_campaign.py run OUT)")
+    ap.add_argument("out", nargs="+", help="campaign directories (hsrod_campaign.py run OUT; a directory may hold "
+                    "recorded cases: per_sphere_record.csv, plan.json, provenance.json)")
     ap.add_argument("--csv", required=True, help="per-sphere table of every case")
     ap.add_argument("--json", help="series summary (JSON)")
     ap.add_argument("--points", help="points for hsrod_fit_campaign")
     ap.add_argument("--series", help="series totals CSV (cross-check, tests)")
     ap.add_argument("--profiles", help="per-sphere profiles CSV, finest mesh")
+    ap.add_argument("--mesh", help="mesh convergence of every series (markdown)")
     a = ap.parse_args()
-    sys.exit(collect(a.out, a.csv, a.json, a.points, a.series, a.profiles))
+    sys.exit(collect(a.out, a.csv, a.json, a.points, a.series, a.profiles, a.mesh))

@@ -23,9 +23,13 @@ Usage:
   hsrod_campaign.py run    OUT [--plan PLAN.json] [--solver RODIBFOAM] [--max-cases K]
                                  [--only SUBSTRING] [--keep-cases]
   hsrod_campaign.py status OUT [--plan PLAN.json]          done / missing per case
-  hsrod_campaign.py collect OUT --csv FILE [--json FILE]   per-sphere table of the results
-                                                           and the mesh-extrapolated
-                                                           coefficients (campaign_analysis.py)
+  hsrod_campaign.py collect OUT [OUT ...] --csv FILE [--json FILE] [--points FILE]
+                           [--series FILE] [--profiles FILE] [--mesh FILE.md]
+                                 per-sphere table of the finished cases of every OUT (result
+                                 JSON files, and cases kept only as a per-sphere record:
+                                 OUT/per_sphere_record.csv) and the mesh-series summaries
+                                 (campaign_analysis.py); the command that writes
+                                 calibration/data: calibration/campaign/README.md
 
 PLAN.json (default: the built-in session plan, DEFAULT_PLAN below):
   {"name": "...", "d": 3e-6, "U": 1e-3, "mu": 1e-3, "rho": 1000,
@@ -389,7 +393,7 @@ def run_all(a, todo, cases, solver, current):
 
 def cmd_collect(a):
     import campaign_analysis  # numpy; same directory
-    return campaign_analysis.collect(a.out, a.csv, a.json)
+    return campaign_analysis.collect(a.out, a.csv, a.json, a.points, a.series, a.profiles, a.mesh)
 
 
 def main(argv=None):
@@ -408,9 +412,13 @@ def main(argv=None):
     p.add_argument("--only")
     p.add_argument("--keep-cases", action="store_true")
     p = sub.add_parser("collect")
-    p.add_argument("out")
+    p.add_argument("out", nargs="+")
     p.add_argument("--csv", required=True)
     p.add_argument("--json")
+    p.add_argument("--points")
+    p.add_argument("--series")
+    p.add_argument("--profiles")
+    p.add_argument("--mesh")
     a = ap.parse_args(argv)
     return {"plan": cmd_plan, "status": cmd_status, "run": cmd_run, "collect": cmd_collect}[a.cmd](a) or 0
 

@@ -171,14 +171,15 @@ using namespace hsrod::confinement_form;
 
 struct Given {
   std::function<double(double)> lone, c_inf, growth;
+  std::function<double(double, int)> divisor;
 };
 
 double curve_value(CurveForm form, const double* p, int np, double beta, int n, const Given& g) {
   switch (form) {
     case CurveForm::SphereFriction:
-      return sphere_friction(beta, p[0]);
+      return np > 1 ? sphere_friction(beta, p[0], p[1]) : sphere_friction(beta, p[0]);
     case CurveForm::SphereDriving:
-      return sphere_driving(beta, p[0]);
+      return np > 1 ? sphere_driving(beta, p[0], p[1]) : sphere_driving(beta, p[0]);
     case CurveForm::RodColumn:
       return rod_n_law(polynomial(p, np, beta), 1.0, 0.0, n);
     case CurveForm::RodColumnGrowth:
@@ -187,6 +188,12 @@ double curve_value(CurveForm form, const double* p, int np, double beta, int n, 
       const double ls = g.lone(beta);
       return rod_n_law(g.c_inf(beta) * rod_driving_inf(beta, p, np), ls, g.growth(beta) * ls, n);
     }
+    case CurveForm::RodVelocity:
+      return rod_velocity(g.c_inf(beta), rod_driving_inf(beta, p, np), g.lone(beta), g.growth(beta), g.growth(beta), n);
+    case CurveForm::RodVelocityRatio:
+      return rod_velocity(g.c_inf(beta), rod_driving_inf(beta, p, np - 1), g.lone(beta), g.growth(beta),
+                          rod_growth(beta, p[np - 1]), n) /
+             g.divisor(beta, n);
   }
   return 0.0;
 }
@@ -217,14 +224,27 @@ struct CurveResiduals {
 }  // namespace
 
 double CurveFit::operator()(double beta, int n) const {
-  return curve_value(form, params.data(), static_cast<int>(params.size()), beta, n, {lone, rod_friction_inf, growth});
+  return curve_value(form, params.data(), static_cast<int>(params.size()), beta, n,
+                     {lone, rod_friction_inf, growth, divisor});
+}
+
+double CurveFit::velocity(double beta, int n) const {
+  if (form == CurveForm::RodVelocityRatio) return (*this)(beta, n) * divisor(beta, n);
+  return (*this)(beta, n);
+}
+
+double CurveFit::held_growth_at(double beta) const {
+  if (form == CurveForm::RodVelocityRatio) return confinement_form::rod_growth(beta, params.back());
+  return growth ? growth(beta) : 0.0;
 }
 
 double CurveFit::asymptote(double beta) const {
   const int np = static_cast<int>(params.size());
   if (form == CurveForm::RodColumn) return confinement_form::polynomial(params.data(), np, beta);
   if (form == CurveForm::RodColumnGrowth) return confinement_form::polynomial(params.data(), np - 1, beta);
-  if (form == CurveForm::RodHeld) return confinement_form::rod_driving_inf(beta, params.data(), np);
+  if (form == CurveForm::RodHeld || form == CurveForm::RodVelocity)
+    return confinement_form::rod_driving_inf(beta, params.data(), np);
+  if (form == CurveForm::RodVelocityRatio) return confinement_form::rod_driving_inf(beta, params.data(), np - 1);
   return (*this)(beta, 1);
 }
 
@@ -234,17 +254,23 @@ double CurveFit::growth_at(double beta) const {
 
 CurveFit fit_curve(CurveForm form, const std::vector<CurvePoint>& points, std::vector<double> start,
                    std::function<double(double)> lone, std::function<double(double)> rod_friction_inf,
-                   std::function<double(double)> growth) {
+                   std::function<double(double)> growth, std::function<double(double, int)> divisor) {
   const int np = static_cast<int>(start.size()), m = static_cast<int>(points.size());
   if (np < 1 || m < np) throw std::invalid_argument("fit_curve: need at least as many points as parameters");
   for (const auto& q : points)
     if (!(q.sigma > 0.0) || q.n < 1 || !std::isfinite(q.value))
       throw std::invalid_argument("fit_curve: every point needs sigma > 0, n >= 1 and a finite value");
-  if (form == CurveForm::RodHeld && !(lone && rod_friction_inf && growth))
-    throw std::invalid_argument("fit_curve: RodHeld needs lambda_s, c_inf and g as functions of beta");
+  const bool rod_given = form == CurveForm::RodHeld || form == CurveForm::RodVelocity || form == CurveForm::RodVelocityRatio;
+  if (rod_given && !(lone && rod_friction_inf && growth))
+    throw std::invalid_argument("fit_curve: RodHeld / RodVelocity need lambda_s, c_inf and g as functions of beta");
+  if (form == CurveForm::RodVelocityRatio && (!divisor || np < 2))
+    throw std::invalid_argument("fit_curve: RodVelocityRatio needs the parallel velocity lambda_par(beta, n) and "
+                                "a polynomial term and k_held");
+  if ((form == CurveForm::SphereFriction || form == CurveForm::SphereDriving) && np > 2)
+    throw std::invalid_argument("fit_curve: the sphere forms have one or two parameters");
   if (form == CurveForm::RodColumnGrowth && np < 2)
     throw std::invalid_argument("fit_curve: RodColumnGrowth needs a polynomial term and k");
-  CurveResiduals res{form, &points, {lone, rod_friction_inf, growth}, np};
+  CurveResiduals res{form, &points, {lone, rod_friction_inf, growth, divisor}, np};
   Eigen::NumericalDiff<CurveResiduals> num(res);
   Eigen::LevenbergMarquardt<Eigen::NumericalDiff<CurveResiduals>> lm(num);
   Eigen::VectorXd x = Eigen::Map<Eigen::VectorXd>(start.data(), np);
@@ -256,6 +282,7 @@ CurveFit fit_curve(CurveForm form, const std::vector<CurvePoint>& points, std::v
   out.lone = lone;
   out.rod_friction_inf = rod_friction_inf;
   out.growth = growth;
+  out.divisor = divisor;
   out.params.assign(x.data(), x.data() + np);
   Eigen::VectorXd f(m);
   res(x, f);

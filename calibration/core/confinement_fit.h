@@ -69,8 +69,10 @@ ConfinementTable fit_table(const std::vector<ForceSample>& samples, const std::s
 // Forms (drag-models/hydro/confinement_forms.h; each with its known beta -> 0
 // or n = 1 limit built in):
 //   SphereFriction  K(beta): Faxen's mid-plane series with its leading
-//                   coefficient p0 free (Faxen: 1.004)
-//   SphereDriving   lambda(beta) = 3/2 (1 - p0 beta^2) (Faxen's law: 1/3)
+//                   coefficient p0 free (Faxen: 1.004); two params: p0 and
+//                   the beta^3 coefficient p3 (Faxen: 0.418)
+//   SphereDriving   lambda(beta) = 3/2 (1 - p0 beta^2) (Faxen's law: 1/3);
+//                   two params: p0 and a beta^4 coefficient p2 (Faxen: 0)
 //   RodColumn       per-sphere friction of a straight rod of n spheres over
 //                   the lone sphere's, rod_n_law(c_inf, 1, 0, n),
 //                   c_inf = p0 + p1 beta + ... (all params)
@@ -82,7 +84,21 @@ ConfinementTable fit_table(const std::vector<ForceSample>& samples, const std::s
 //                   lambda_inf = 3/2 (1 - beta (q0 + q1 beta ...)) (params),
 //                   c_inf and g = `rod_friction_inf`, `growth` (given, from
 //                   the friction fit), lambda_s = `lone` (given).
-enum class CurveForm { SphereFriction, SphereDriving, RodColumn, RodColumnGrowth, RodHeld };
+//   RodVelocity     force-free velocity of the rod (over the gap-mean
+//                   velocity), the RodHeld load over the friction n-law:
+//                   confinement_form::rod_velocity(c_inf, lambda_inf,
+//                   lambda_s, g, n), lambda_inf as in RodHeld (params);
+//                   fitted to the velocities directly, which the mesh
+//                   changes far less than the loads (ratios of loads on
+//                   one mesh: calibration/README.md)
+//   RodVelocityRatio the same velocity with its own held growth
+//                   g_held = k_held beta^2 (params = (polynomial..., k_held);
+//                   RodVelocity has g_held = g) over a given velocity,
+//                   `divisor`(beta, n) (r = lambda_perp / lambda_par, with
+//                   lambda_par from a RodVelocity fit): the perpendicular
+//                   velocity fitted to the measured r, so that r - 1 (a few
+//                   1e-3 at beta 0.3) keeps its sign and size
+enum class CurveForm { SphereFriction, SphereDriving, RodColumn, RodColumnGrowth, RodHeld, RodVelocity, RodVelocityRatio };
 
 struct CurvePoint {
   double beta = 0.0;   // d / H [-]
@@ -101,11 +117,16 @@ struct CurveFit {
   // given functions of beta: the lone-sphere limit (RodHeld: lambda_s), the
   // infinite rod's friction c_inf and the growth coefficient g (RodHeld)
   std::function<double(double)> lone, rod_friction_inf, growth;
-  // RodColumn*: c_inf(beta); RodHeld: lambda_inf(beta); spheres: the value
+  std::function<double(double, int)> divisor;  // RodVelocityRatio: lambda_par(beta, n)
+  // RodColumn*: c_inf(beta); RodHeld, RodVelocity*: lambda_inf(beta); spheres: the value
   double asymptote(double beta) const;
   // RodColumnGrowth: g(beta) = k beta^2; else 0
   double growth_at(double beta) const;
   double operator()(double beta, int n = 1) const;
+  // RodVelocityRatio: the velocity itself (the value times the divisor); else operator()
+  double velocity(double beta, int n) const;
+  // RodVelocityRatio: g_held(beta) = k_held beta^2; RodVelocity: the given g
+  double held_growth_at(double beta) const;
 };
 
 // Fits `form` to the points from the start values `start` (its size sets
@@ -115,6 +136,7 @@ struct CurveFit {
 // LM fails.
 CurveFit fit_curve(CurveForm form, const std::vector<CurvePoint>& points, std::vector<double> start,
                    std::function<double(double)> lone = {}, std::function<double(double)> rod_friction_inf = {},
-                   std::function<double(double)> growth = {});
+                   std::function<double(double)> growth = {},
+                   std::function<double(double, int)> divisor = {});
 
 }  // namespace hsrod::calib

@@ -186,13 +186,24 @@ def summarise(tab):
     return out
 
 
-# relative uncertainty floor of every resolved coefficient: the lateral faces
-# 4 H away (results.md sec. 2: Faxen ratio +0.43 % at 4 H, +0.12 % at 6 H)
+# relative uncertainty floor of every resolved load coefficient: the lateral
+# faces 4 H away (results.md sec. 2: Faxen ratio +0.43 % at 4 H, +0.12 % at 6 H)
 DOMAIN_FLOOR = 0.003
+# floor of the force-free velocities (ratios of two loads on one mesh and one
+# domain): the lone sphere's velocity at beta 0.3 is within 0.12 % of Faxen's
+# law on the finest mesh (1.4533 vs 1.4550; README "Mesh series"), its
+# change from d/h 8 to 10 0.09 %
+VELOCITY_FLOOR = 0.001
+# absolute floor of r = lambda_perp / lambda_par (both from one run on one
+# mesh: their mesh changes cancel to 1e-5 - 7e-5, mesh_convergence.md)
+RATIO_FLOOR = 1e-4
 
 
 def fit_points(summ):
-    """Points for hsrod_fit_campaign: (quantity, beta, n, value, sigma, role)."""
+    """Points for hsrod_fit_campaign: (quantity, beta, n, value, sigma, role).
+    Loads over the lone sphere's friction (per sphere), force-free velocities
+    over the gap-mean velocity (par_velocity, perp_velocity) and their ratio
+    r (velocity_ratio)."""
     lone = {rec["beta"]: rec for rec in summ if rec["n"] == 1}
     pts = []
 
@@ -202,13 +213,23 @@ def fit_points(summ):
 
     for rec in summ:
         q, beta, n = rec["quantities"], rec["beta"], rec["n"]
-        if rec["spacing"] != 1 or beta not in lone:
+        if rec["spacing"] != 1:
+            continue
+        if n > 1:  # velocities need no lone sphere at this beta (held-out beta 0.5)
+            for name, key in (("par_velocity", "lambda_par"), ("perp_velocity", "lambda_perp")):
+                v = q[key]["estimate"]
+                pts.append((name, beta, n, v, abs(v) * math.hypot(rel(q[key]), VELOCITY_FLOOR), rec["role"]))
+            u = q["r"]["uncertainty"]
+            pts.append(("velocity_ratio", beta, n, q["r"]["estimate"],
+                        math.hypot(u if math.isfinite(u) else 0.0, RATIO_FLOOR), rec["role"]))
+        if beta not in lone:
             continue
         K = lone[beta]["quantities"]["R_par"]
         if n == 1:
-            for name, key in (("sphere_friction", "R_par"), ("sphere_driving", "lambda_par")):
+            for name, key, floor in (("sphere_friction", "R_par", DOMAIN_FLOOR),
+                                     ("sphere_driving", "lambda_par", VELOCITY_FLOOR)):
                 v = q[key]["estimate"]
-                pts.append((name, beta, 1, v, abs(v) * math.hypot(rel(q[key]), DOMAIN_FLOOR), rec["role"]))
+                pts.append((name, beta, 1, v, abs(v) * math.hypot(rel(q[key]), floor), rec["role"]))
             continue
         for name, key in (("par_friction", "R_par"), ("perp_friction", "R_perp"),
                           ("par_held", "D_par"), ("perp_held", "D_perp")):

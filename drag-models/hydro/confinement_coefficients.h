@@ -83,6 +83,10 @@ std::string coefficient_range_problem(const ConfinementCoefficients& c);
 // the built-in table (default_coefficients.cpp) [-]. Level 2 uses it to
 // scale the table's 10-sphere rod columns to other rod lengths.
 double perpendicular_growth_coefficient();
+// k_held of the growth g_held = k_held beta^2 of the held-in-flow load per
+// sphere of a rod across the flow (confinement_form::rod_velocity), fitted
+// to the resolved r = U_perp / U_par with the built-in table [-].
+double perpendicular_held_growth_coefficient();
 
 // Faxen's series for a sphere midway between two parallel walls moving
 // parallel to them (Happel & Brenner 1965, eq. 7-4.28): friction over

@@ -11,18 +11,21 @@
 namespace hsrod::confinement_form {
 
 // Lone sphere's friction over 3 pi mu d: Faxen's mid-plane series (Happel &
-// Brenner 1965, eq. 7-4.28) with its leading coefficient p0 free (Faxen:
-// 1.004): 1 / (1 - p0 beta + 0.418 beta^3 + 0.21 beta^4 - 0.169 beta^5);
-// 1 as beta -> 0.
-inline double sphere_friction(double beta, double p0) {
+// Brenner 1965, eq. 7-4.28) with its leading coefficient p0 and its beta^3
+// coefficient p3 free (Faxen: 1.004, 0.418):
+// 1 / (1 - p0 beta + p3 beta^3 + 0.21 beta^4 - 0.169 beta^5); 1 as beta -> 0.
+inline double sphere_friction(double beta, double p0, double p3 = 0.418) {
   const double b3 = beta * beta * beta;
-  return 1.0 / (1.0 - p0 * beta + 0.418 * b3 + 0.21 * b3 * beta - 0.169 * b3 * beta * beta);
+  return 1.0 / (1.0 - p0 * beta + p3 * b3 + 0.21 * b3 * beta - 0.169 * b3 * beta * beta);
 }
 
 // Lone sphere's force-free velocity over the gap-mean velocity:
-// 3/2 (1 - p0 beta^2) (Faxen's law in the parabolic gap profile: p0 = 1/3);
-// the mid-plane velocity 3/2 as beta -> 0.
-inline double sphere_driving(double beta, double p0) { return 1.5 * (1.0 - p0 * beta * beta); }
+// 3/2 (1 - p0 beta^2 - p2 beta^4) (Faxen's law in the parabolic gap
+// profile: p0 = 1/3, p2 = 0); the mid-plane velocity 3/2 as beta -> 0.
+inline double sphere_driving(double beta, double p0, double p2 = 0.0) {
+  const double b2 = beta * beta;
+  return 1.5 * (1.0 - p0 * b2 - p2 * b2 * b2);
+}
 
 inline double polynomial(const double* p, int np, double beta) {
   double v = 0.0, b = 1.0;
@@ -45,6 +48,18 @@ inline double rod_n_law_asymptote(double c_m, double c_1, double g, int m) {
 // Growth coefficient across the axis: g = k beta^2 (k fitted, see
 // perpendicular_growth_coefficient in confinement_coefficients.h).
 inline double rod_growth(double beta, double k) { return k * beta * beta; }
+
+// Force-free velocity of a straight rod of n spheres (over the gap-mean
+// velocity): its held load per sphere over its friction per sphere, both
+// with the n-law, the held load about the infinite rod's c_inf lambda_inf
+// with the lone sphere's lambda_s at n = 1 and its own growth g_held lambda_s
+// (the pressure build-up in front of a chain held across the flow need not
+// be that of the chain dragged through fluid at rest, g):
+//   lambda(n) = rod_n_law(c_inf lambda_inf, lambda_s, g_held lambda_s, n) / rod_n_law(c_inf, 1, g, n);
+// lambda(1) = lambda_s, lambda(n -> inf) = lambda_inf when g = g_held = 0.
+inline double rod_velocity(double c_inf, double lambda_inf, double lambda_s, double g, double g_held, int n) {
+  return rod_n_law(c_inf * lambda_inf, lambda_s, g_held * lambda_s, n) / rod_n_law(c_inf, 1.0, g, n);
+}
 
 // Infinite rod's force-free velocity over the gap-mean velocity:
 // 3/2 (1 - beta (q0 + q1 beta + ...)); 3/2 as beta -> 0 (Berthet et al. 2013).

@@ -82,21 +82,21 @@ void LocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow,
   // c(n) = c_inf + (c_1 - c_inf - g)/n + g n (two ends carry the lone
   // sphere's excess; across the axis the depth-averaged pressure in front of
   // the chain adds g = k beta^2), for the friction per sphere (c_1 = 1) and
-  // the held load per sphere c lambda (c_1 = the lone sphere's lambda, g
-  // lambda), so that n = 1 is the lone sphere of level 1. The form and k are
-  // fitted to the resolved campaign (rods of 2, 5, 10 spheres at beta 0.15
-  // and 0.3; held out: 7 spheres at beta 0.25), calibration/data/
-  // confinement_campaign_fit.json.
+  // the held load per sphere c lambda (c_1 = the lone sphere's lambda, its
+  // own growth g_held lambda, g_held = k_held beta^2), so that n = 1 is the
+  // lone sphere of level 1. The forms, k and k_held are fitted to the
+  // resolved campaign (calibration/data/confinement_campaign_fit.json).
   const int n = rod.sections();
   using confinement_form::rod_n_law;
   using confinement_form::rod_n_law_asymptote;
   const double beta = parameters_.beta(), ls = c.sphere_driving;
   const double g_perp = confinement_form::rod_growth(beta, perpendicular_growth_coefficient());
+  const double g_held = confinement_form::rod_growth(beta, perpendicular_held_growth_coefficient());
   const double c_par = rod_n_law(rod_n_law_asymptote(c.parallel_friction, 1.0, 0.0, 10), 1.0, 0.0, n);
   const double c_perp = rod_n_law(rod_n_law_asymptote(c.perpendicular_friction, 1.0, g_perp, 10), 1.0, g_perp, n);
   const double h_par = rod_n_law(rod_n_law_asymptote(c.parallel_friction * c.parallel_driving, ls, 0.0, 10), ls, 0.0, n);
-  const double h_perp = rod_n_law(rod_n_law_asymptote(c.perpendicular_friction * c.perpendicular_driving, ls, g_perp * ls, 10),
-                                  ls, g_perp * ls, n);
+  const double h_perp = rod_n_law(rod_n_law_asymptote(c.perpendicular_friction * c.perpendicular_driving, ls, g_held * ls, 10),
+                                  ls, g_held * ls, n);
   sample_flow(rod, flow, out);
   for (int i = 0; i < rod.size(); ++i) {
     const Eigen::Vector3d& t = tangents[rod.section_of(i)];

@@ -33,6 +33,13 @@ TEST(calibration_CurveFit, SphereFormsRecoverFaxenCoefficients) {
   const CurveFit d = fit_curve(CurveForm::SphereDriving, dr, {0.0});
   EXPECT_NEAR(d.params[0], 1.0 / 3.0, 1e-6);
   EXPECT_NEAR(d(0.0), 1.5, 1e-12);  // the beta -> 0 limit is built in
+  // two parameters: the beta^3 coefficient of the series, a beta^4 term of the law
+  const CurveFit f2 = fit_curve(CurveForm::SphereFriction, fr, {0.5, 0.0});
+  EXPECT_NEAR(f2.params[0], 1.004, 1e-6);
+  EXPECT_NEAR(f2.params[1], 0.418, 1e-5);
+  const CurveFit d2 = fit_curve(CurveForm::SphereDriving, dr, {0.0, 0.1});
+  EXPECT_NEAR(d2.params[0], 1.0 / 3.0, 1e-6);
+  EXPECT_NEAR(d2.params[1], 0.0, 1e-5);
 }
 
 TEST(calibration_CurveFit, RodNLawRecoveredWithUncertaintiesCoveringTheTruth) {
@@ -70,6 +77,42 @@ TEST(calibration_CurveFit, RodNLawRecoveredWithUncertaintiesCoveringTheTruth) {
   EXPECT_NEAR(h.asymptote(0.0), 1.5, 1e-12);
 }
 
+TEST(calibration_CurveFit, RodVelocitiesAndTheirRatioRecovered) {
+  // Synthetic rods: friction n-laws c_inf,par = 0.26 + 0.34 beta, c_inf,perp
+  // = 0.45 + 0.62 beta with g = 0.36 beta^2; velocities with lambda_inf =
+  // 1.5 (1 - beta (0.03 + 0.35 beta)) along, 1.5 (1 - beta (0.02 + 0.33
+  // beta)) across, held growth k_held = 0.357 across: the lambda_par fit and
+  // the fit of r = lambda_perp / lambda_par give the parameters back, and
+  // the velocities keep their n = 1 limit (the lone sphere).
+  const auto lone = [](double b) { return 1.5 * (1.0 - b * b / 3.0); };
+  const auto par_inf = [](double b) { return 0.26 + 0.34 * b; };
+  const auto perp_inf = [](double b) { return 0.45 + 0.62 * b; };
+  const auto g = [](double b) { return 0.36 * b * b; };
+  const auto zero = [](double) { return 0.0; };
+  const double qp[2] = {0.03, 0.35}, qq[2] = {0.02, 0.33};
+  std::vector<CurvePoint> vel, ratio;
+  for (double b : {0.1, 0.2, 0.3, 0.45, 0.6})
+    for (int n : {2, 5, 10}) {
+      const double lp = form::rod_velocity(par_inf(b), form::rod_driving_inf(b, qp, 2), lone(b), 0.0, 0.0, n);
+      const double lq = form::rod_velocity(perp_inf(b), form::rod_driving_inf(b, qq, 2), lone(b), g(b), 0.357 * b * b, n);
+      vel.push_back({b, n, lp, 1e-3});
+      ratio.push_back({b, n, lq / lp, 1e-4});
+    }
+  const CurveFit pv = fit_curve(CurveForm::RodVelocity, vel, {0.0, 0.0}, lone, par_inf, zero);
+  EXPECT_NEAR(pv.params[0], 0.03, 1e-6);
+  EXPECT_NEAR(pv.params[1], 0.35, 1e-6);
+  EXPECT_NEAR(pv(0.3, 1), lone(0.3), 1e-12);
+  const CurveFit qv = fit_curve(CurveForm::RodVelocityRatio, ratio, {0.0, 0.0, 0.3}, lone, perp_inf, g,
+                                [&pv](double b, int n) { return pv(b, n); });
+  ASSERT_EQ(qv.params.size(), 3u);
+  EXPECT_NEAR(qv.params[0], 0.02, 1e-5);
+  EXPECT_NEAR(qv.params[1], 0.33, 1e-5);
+  EXPECT_NEAR(qv.params[2], 0.357, 1e-5);
+  EXPECT_NEAR(qv.held_growth_at(0.5), 0.357 * 0.25, 1e-5);
+  EXPECT_NEAR(qv.velocity(0.3, 1), lone(0.3), 1e-12);
+  EXPECT_NEAR(qv.velocity(0.45, 10) / pv(0.45, 10), qv(0.45, 10), 1e-12);
+}
+
 TEST(calibration_CurveFit, BadInputRefused) {
   const auto one = [](double) { return 1.0; };
   std::vector<CurvePoint> pts = {{0.3, 1, 1.4, 0.01}};
@@ -79,4 +122,6 @@ TEST(calibration_CurveFit, BadInputRefused) {
   pts.back().sigma = 0.01;
   EXPECT_THROW(fit_curve(CurveForm::RodColumnGrowth, pts, {0.4}), std::invalid_argument);  // no k
   EXPECT_THROW(fit_curve(CurveForm::RodHeld, pts, {0.1, 0.0}, one), std::invalid_argument);  // no c_inf, g
+  EXPECT_THROW(fit_curve(CurveForm::RodVelocityRatio, pts, {0.1, 0.3}, one, one, one), std::invalid_argument);  // no divisor
+  EXPECT_THROW(fit_curve(CurveForm::SphereFriction, pts, {1.0, 0.4, 0.2}), std::invalid_argument);  // 3 params
 }

@@ -72,7 +72,13 @@ TEST(calibration_AutoErrorModel, BuiltInRecordIsTheCurrentCrossCheck) {
   for (const auto& s : read_csv(kData + "resolved_campaign_series.csv")) {
     if (s.at("role") != "fit" || std::stod(s.at("spacing")) != 1.0) continue;
     for (int level = 1; level <= 4; ++level) {
-      const auto now = measured(level, s);
+      hsrod::LevelErrorRow now;
+      try {
+        now = measured(level, s);
+      } catch (const std::exception& e) {  // a level that refuses the rod has no row (crosscheck_levels.cpp)
+        EXPECT_EQ(by_key.count({level, std::stod(s.at("beta")), std::stoi(s.at("n"))}), 0u) << e.what();
+        continue;
+      }
       const auto it = by_key.find({level, now.beta, now.n});
       ASSERT_NE(it, by_key.end()) << "no record row for level " << level << " beta " << now.beta << " n " << now.n
                                   << ": regenerate the record (auto_model_choice_record.cpp)";
@@ -84,7 +90,7 @@ TEST(calibration_AutoErrorModel, BuiltInRecordIsTheCurrentCrossCheck) {
     }
   }
   EXPECT_EQ(rows, static_cast<int>(record.size())) << "record rows without a resolved rod";
-  EXPECT_GE(rows, 4 * 8);
+  EXPECT_GE(rows, 3 * 8);
 }
 
 TEST(calibration_AutoErrorModel, RecordedFileIsTheBuiltInRecord) {
@@ -106,7 +112,14 @@ TEST(calibration_AutoErrorModel, InterpolatedRecordPredictsTheHeldOutRod) {
     if (s.at("role") != "heldout" || std::stod(s.at("spacing")) != 1.0) continue;
     ++rods;
     for (int level = 1; level <= 4; ++level) {
-      const auto now = measured(level, s);
+      hsrod::LevelErrorRow now;
+      try {
+        now = measured(level, s);
+      } catch (const std::exception& e) {
+        std::printf("held out beta %s n %s level %d refuses: %s\n", s.at("beta").c_str(), s.at("n").c_str(), level,
+                    e.what());
+        continue;
+      }
       const auto predicted = hsrod::expected_level_error(hsrod::level_error_record(), level, now.beta, now.n);
       std::printf("held out beta %s n %s level %d: force error %.1f %% (record predicts %.1f %%), velocity %.2f %% "
                   "(%.2f %%)\n", s.at("beta").c_str(), s.at("n").c_str(), level, 100 * now.force_error,

@@ -11,7 +11,9 @@
 //  - the same for the rod left out of the fit (role "heldout": 7 spheres at
 //    beta 0.25, neither fitted): the table is a fit (smooth forms in beta
 //    and n), not a lookup;
-//  - a lone sphere at every level is the resolved confined sphere (1 %).
+//  - a lone sphere at every level is the resolved confined sphere (1 %);
+//    level 4 may refuse a beta where its default window grid is too coarse
+//    for the sphere, with an error naming the remedy.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -81,9 +83,12 @@ void expect_rod(const Resolved& s, const std::string& level) {
   EXPECT_NEAR(m.lambda_par() / s.q.at("lambda_par"), 1.0, 0.03) << where << " free velocity along";
   EXPECT_NEAR(m.lambda_perp() / s.q.at("lambda_perp"), 1.0, 0.03) << where << " free velocity across";
   EXPECT_NEAR(m.r() / s.q.at("r"), 1.0, 0.01) << where << " r = U_perp / U_par";
-  std::printf("%s: R_par %+.2f %% R_perp %+.2f %% D_par %+.2f %% D_perp %+.2f %% r %.4f (resolved %.4f)\n",
+  std::printf("%s: R_par %+.2f %% R_perp %+.2f %% D_par %+.2f %% D_perp %+.2f %% lambda_par %+.2f %% lambda_perp "
+              "%+.2f %% r - 1 = %.5f (resolved %.5f)\n",
               where.c_str(), 100 * (m.R_par() / s.q.at("R_par") - 1), 100 * (m.R_perp() / s.q.at("R_perp") - 1),
-              100 * (m.D_par() / s.q.at("D_par") - 1), 100 * (m.D_perp() / s.q.at("D_perp") - 1), m.r(), s.q.at("r"));
+              100 * (m.D_par() / s.q.at("D_par") - 1), 100 * (m.D_perp() / s.q.at("D_perp") - 1),
+              100 * (m.lambda_par() / s.q.at("lambda_par") - 1), 100 * (m.lambda_perp() / s.q.at("lambda_perp") - 1),
+              m.r() - 1, s.q.at("r") - 1);
 }
 
 }  // namespace
@@ -134,7 +139,18 @@ TEST(calibration_CalibratedLevels, LoneSphereAtEveryLevelIsTheResolvedConfinedSp
     if (s.n != 1) continue;
     ++spheres;
     for (const std::string level : {"isotropic", "local", "nonlocal", "twoway"}) {
-      const RowResponse m = row_response(level, s.beta, 1, 1.0, table);
+      RowResponse m;
+      try {
+        m = row_response(level, s.beta, 1, 1.0, table);
+      } catch (const std::exception& e) {
+        // Level 4 refuses a window grid too coarse for the sphere (its
+        // footprint more mobile than the sphere: beta >= 0.6 at the default
+        // 4 cells per d): reported as such, with the remedy named.
+        std::printf("%s at beta %.2f refuses: %s\n", level.c_str(), s.beta, e.what());
+        EXPECT_EQ(level, "twoway") << e.what();
+        EXPECT_NE(std::string(e.what()).find("refine the grid"), std::string::npos) << e.what();
+        continue;
+      }
       EXPECT_NEAR(m.R_par() / s.q.at("R_par"), 1.0, 0.01) << level << " beta " << s.beta;
       EXPECT_NEAR(m.D_par() / s.q.at("D_par"), 1.0, 0.01) << level << " beta " << s.beta;
       EXPECT_NEAR(m.R_perp() / m.R_par(), 1.0, 1e-9) << level << ": a lone sphere is isotropic";

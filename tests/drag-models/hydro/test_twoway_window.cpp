@@ -298,6 +298,19 @@ CrossFlowLoad cross_flow_load(const HydrodynamicModel& model, const RodGeometry&
 }
 }  // namespace
 
+// The paper's Hele-Shaw scene (beta = 0.83) lies beyond the calibrated beta
+// range (0.1-0.6 in the fit, calibration/data/confinement_campaign_fit.json),
+// where the built-in lone-sphere friction is extrapolated (2.9 at 0.83), and
+// level 4 refuses it at every window grid (footprint mobility 1.08e6 >
+// 1/zeta_o 0.87e6 m/(N s) at 8 cells per d: its window cannot carry a sphere
+// that resists more than its footprint does). The two tests of level 4's
+// numerics at this scene use the pre-campaign table (Faxen's series, 2.28),
+// so that they test the window, not the extrapolation.
+static hsrod::ConfinementTable paper_scene_table() {
+  return hsrod::ConfinementTable::read(std::string(HSROD_TEST_DATA_DIR) +
+                                       "/../../../calibration/data/confinement_defaults_before_campaign.txt");
+}
+
 // The paper's Hele-Shaw scene (Table 1: 15 spheres of 54 um, H = 65 um,
 // beta = 0.83) with the rod across the flow and held straight, moving as a
 // rigid body at its free velocity: the load left on each sphere is what
@@ -307,8 +320,8 @@ CrossFlowLoad cross_flow_load(const HydrodynamicModel& model, const RodGeometry&
 TEST(TwoWayWindowModel, RodAcrossTheFlowIsLoadedIntoTheCShapeAsWithLevel3) {
   const double d = 54e-6, gap = 65e-6;
   const HydrodynamicParameters p{kMu, gap, d};
-  const TwoWayWindowModel level4_model(p, ConfinementTable::default_table());
-  const auto level3 = make_hydrodynamic_model("nonlocal", p, ConfinementTable::default_table());
+  const TwoWayWindowModel level4_model(p, paper_scene_table());
+  const auto level3 = make_hydrodynamic_model("nonlocal", p, paper_scene_table());
   const UniformSlitStream stream(gap);
   RodGeometry rod = straight_rod(15, d, 0.5 * kPi);
   const double l4 = cross_flow_load(level4_model, rod, stream).bending_load;
@@ -335,7 +348,7 @@ TEST(TwoWayWindowModel, GridConvergedFromFourCellsPerDiameter) {
   auto response = [&](double cells) {
     TwoWayWindowOptions options;
     options.cells_per_diameter = cells;
-    const TwoWayWindowModel model({kMu, gap, d}, ConfinementTable::default_table(), options);
+    const TwoWayWindowModel model({kMu, gap, d}, paper_scene_table(), options);
     return cross_flow_load(model, rod, stream);
   };
   const auto four = response(4.0), six = response(6.0);

@@ -19,7 +19,8 @@ Scenes and what each error is measured against:
     velocity of a rigid rod needs nothing more: Stokes flow is linear).
 
   Pore (tests/benchmarks/bench_pore_passage, the paper's pore passage of a
-    10-sphere rod at beta 0.15): no resolved run of the passage exists. The
+    10-sphere rod at beta 0.15): no resolved run of this passage exists
+    (calibration/validation/pore_passage has one of a smaller scene). The
     error against the resolved reference is that of the level's transport of
     the same rod (10 spheres, beta 0.15) away from the pore: the largest
     error of its totals (friction and held load along and across) and of its

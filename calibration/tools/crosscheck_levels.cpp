@@ -25,38 +25,14 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
-#include <tuple>
 
 #include "hydro/model_registry.h"
 #include "level_crosscheck.h"
+#include "resolved_campaign.h"
 
 using namespace hsrod::calib;
 
 namespace {
-
-std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::string line;
-  std::vector<std::string> head;
-  std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string x;
-    while (std::getline(ss, x, ',')) f.push_back(x);
-    if (head.empty()) {
-      head = f;
-      continue;
-    }
-    if (f.size() != head.size()) throw std::runtime_error(path + ": ragged row: " + line);
-    std::map<std::string, std::string> r;
-    for (std::size_t k = 0; k < f.size(); ++k) r[head[k]] = f[k];
-    rows.push_back(r);
-  }
-  return rows;
-}
 
 std::vector<std::string> split(const std::string& s) {
   std::vector<std::string> out;
@@ -86,12 +62,9 @@ int main(int argc, char** argv) {
     const hsrod::ConfinementTable table =
         table_path.empty() ? hsrod::ConfinementTable::default_table() : hsrod::ConfinementTable::read(table_path);
     if (!write_table.empty()) table.write(write_table);
-    const auto series = read_csv(series_path);
+    const auto series = read_csv_rows(series_path);
     // profiles: (beta, n, spacing, load_component) -> values by sphere
-    std::map<std::tuple<std::string, std::string, std::string, std::string>, std::vector<double>> prof;
-    for (const auto& r : read_csv(profiles_path))
-      prof[{r.at("beta"), r.at("n"), r.at("spacing"), r.at("load") + "_" + r.at("component")}].push_back(
-          std::stod(r.at("value")));
+    const auto prof = read_resolved_profiles(profiles_path);
     std::ofstream out(out_path);
     out << "label,level,beta,n,spacing,role,quantity,resolved,model,rel_error\n";
     out.precision(8);

@@ -13,7 +13,6 @@
 #include <cmath>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -21,32 +20,11 @@
 #include "hydro/auto_model_choice.h"
 #include "hydro/model_registry.h"
 #include "level_crosscheck.h"
+#include "resolved_campaign.h"
 
 using namespace hsrod::calib;
 
 namespace {
-
-std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << path;
-  std::string line;
-  std::vector<std::string> head;
-  std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
-    if (head.empty()) {
-      head = f;
-      continue;
-    }
-    std::map<std::string, std::string> r;
-    for (std::size_t k = 0; k < f.size() && k < head.size(); ++k) r[head[k]] = f[k];
-    rows.push_back(r);
-  }
-  return rows;
-}
 
 const std::string kData = std::string(HSROD_TEST_DATA_DIR) + "/../../calibration/data/";
 
@@ -69,7 +47,7 @@ TEST(calibration_AutoErrorModel, BuiltInRecordIsTheCurrentCrossCheck) {
   std::map<std::tuple<int, double, int>, hsrod::LevelErrorRow> by_key;
   for (const auto& r : record) by_key[{r.level, r.beta, r.n}] = r;
   int rows = 0;
-  for (const auto& s : read_csv(kData + "resolved_campaign_series.csv")) {
+  for (const auto& s : read_csv_rows(kData + "resolved_campaign_series.csv")) {
     if (s.at("role") != "fit" || std::stod(s.at("spacing")) != 1.0) continue;
     for (int level = 1; level <= 4; ++level) {
       hsrod::LevelErrorRow now;
@@ -94,7 +72,7 @@ TEST(calibration_AutoErrorModel, BuiltInRecordIsTheCurrentCrossCheck) {
 }
 
 TEST(calibration_AutoErrorModel, RecordedFileIsTheBuiltInRecord) {
-  const auto file = read_csv(kData + "level_error_record.csv");
+  const auto file = read_csv_rows(kData + "level_error_record.csv");
   const auto& record = hsrod::level_error_record();
   ASSERT_EQ(file.size(), record.size());
   for (std::size_t k = 0; k < file.size(); ++k) {
@@ -108,7 +86,7 @@ TEST(calibration_AutoErrorModel, RecordedFileIsTheBuiltInRecord) {
 
 TEST(calibration_AutoErrorModel, InterpolatedRecordPredictsTheHeldOutRod) {
   int rods = 0;
-  for (const auto& s : read_csv(kData + "resolved_campaign_series.csv")) {
+  for (const auto& s : read_csv_rows(kData + "resolved_campaign_series.csv")) {
     if (s.at("role") != "heldout" || std::stod(s.at("spacing")) != 1.0) continue;
     ++rods;
     for (int level = 1; level <= 4; ++level) {

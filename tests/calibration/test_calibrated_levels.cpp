@@ -17,54 +17,20 @@
 //    for the sphere, with an error naming the remedy.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "level_crosscheck.h"
+#include "resolved_campaign.h"
 
 using namespace hsrod::calib;
 
 namespace {
 
-struct Resolved {
-  double beta = 0, spacing = 1;
-  int n = 1;
-  std::string role;
-  std::map<std::string, double> q;
-};
+using Resolved = ResolvedRod;
 
 std::vector<Resolved> resolved_series() {
-  const std::string path = std::string(HSROD_TEST_DATA_DIR) + "/../../calibration/data/resolved_campaign_series.csv";
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << path;
-  std::string line;
-  std::vector<std::string> head;
-  std::vector<Resolved> out;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string x;
-    while (std::getline(ss, x, ',')) f.push_back(x);
-    if (head.empty()) {
-      head = f;
-      continue;
-    }
-    Resolved r;
-    for (std::size_t k = 0; k < f.size(); ++k) {
-      if (head[k] == "role") r.role = f[k];
-      else if (head[k] == "meshes") continue;
-      else if (head[k] == "beta") r.beta = std::stod(f[k]);
-      else if (head[k] == "n") r.n = std::stoi(f[k]);
-      else if (head[k] == "spacing") r.spacing = std::stod(f[k]);
-      else r.q[head[k]] = std::stod(f[k]);
-    }
-    out.push_back(r);
-  }
-  return out;
+  return read_resolved_series(std::string(HSROD_TEST_DATA_DIR) + "/../../calibration/data/resolved_campaign_series.csv");
 }
 
 const hsrod::ConfinementTable& calibrated_table() {

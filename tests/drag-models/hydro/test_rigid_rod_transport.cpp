@@ -17,11 +17,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <map>
-#include <sstream>
 #include <string>
 #include <vector>
+
+#include "resolved_campaign.h"  // calibration/core: the reader of the resolved records
 
 using namespace hsrod;
 using hsrod_test::free_rigid_translation;
@@ -30,43 +29,6 @@ using hsrod_test::straight_rod;
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kD = 3e-6, kMu = 1e-3;
-
-// One row of the resolved campaign's series (header names the columns).
-struct ResolvedRod {
-  double beta = 0, spacing = 1;
-  int n = 1;
-  std::string role;
-  std::map<std::string, double> q;
-};
-
-std::vector<ResolvedRod> resolved_rods(const std::string& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << path;
-  std::string line;
-  std::vector<std::string> head;
-  std::vector<ResolvedRod> out;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
-    if (head.empty()) {
-      head = f;
-      continue;
-    }
-    ResolvedRod r;
-    for (std::size_t k = 0; k < f.size() && k < head.size(); ++k) {
-      if (head[k] == "role") r.role = f[k];
-      else if (head[k] == "meshes") continue;
-      else if (head[k] == "beta") r.beta = std::stod(f[k]);
-      else if (head[k] == "n") r.n = std::stoi(f[k]);
-      else if (head[k] == "spacing") r.spacing = std::stod(f[k]);
-      else r.q[head[k]] = std::stod(f[k]);
-    }
-    out.push_back(r);
-  }
-  return out;
-}
 
 std::unique_ptr<HydrodynamicModel> model(const std::string& name, double beta) {
   static const ConfinementTable table = ConfinementTable::default_table();
@@ -161,7 +123,7 @@ TEST(RigidRodTransport, LocalRodReproducesResolvedRigidRods) {
   // lambda_par), every rod length and beta of the record, fitted or held out:
   // totals within 10 %, free velocity within 3 %, r within 1 %.
   const hsrod_test::UniformStream stream;  // U_mean = 1 m/s
-  const auto rows = resolved_rods(std::string(HSROD_TEST_DATA_DIR) + "/../../../calibration/data/resolved_campaign_series.csv");
+  const auto rows = hsrod::calib::read_resolved_series(std::string(HSROD_TEST_DATA_DIR) + "/../../../calibration/data/resolved_campaign_series.csv");
   int rods = 0;
   for (const auto& s : rows) {
     if (s.n < 2 || s.spacing != 1.0) continue;

@@ -4,6 +4,10 @@
 
 #include "flow/background_flow.h"
 #include "hydro/hydrodynamic_model.h"
+#include "hydro/nonlocal_model.h"
+#include "hydro/twoway_near_field.h"
+
+#include <memory>
 
 namespace hsrod::calib {
 
@@ -36,28 +40,40 @@ double RowResponse::R_perp() const { return sum(friction_perp); }
 double RowResponse::D_par() const { return sum(driving_par); }
 double RowResponse::D_perp() const { return sum(driving_perp); }
 
-RowResponse row_response(const std::string& model_name, double beta, int n, double spacing,
-                         const ConfinementTable& table) {
-  const double d = 3e-6, mu = 1e-3, U = 1e-3;  // any: the result is dimensionless
-  const HydrodynamicParameters p{mu, d / beta, d};
-  const auto model = make_hydrodynamic_model(model_name, p, table);
-  const UniformStream still(p.gap_height, 0.0), stream(p.gap_height, U);
-  const double scale = 3.0 * kPi * mu * d * U;
-  RowResponse out;
+HydrodynamicParameters row_parameters(double beta) {
+  const double d = 3e-6, mu = 1e-3;  // any: the result is dimensionless
+  return {mu, d / beta, d};
+}
+
+RowLoads row_loads(const HydrodynamicModel& model, const HydrodynamicParameters& p, int n, double spacing) {
+  RowLoads out;
+  out.parameters = p;
+  out.speed = 1e-3;
+  const double d = p.sphere_diameter;
+  const UniformStream still(p.gap_height, 0.0), stream(p.gap_height, out.speed);
   for (int across = 0; across < 2; ++across) {
-    RodGeometry rod;
+    RodGeometry& rod = out.rod[across];
     rod.sphere_diameter = d;
     for (int i = 0; i < n; ++i) {
       const double s = (i - 0.5 * (n - 1)) * spacing * d;
       rod.positions.push_back(across ? Eigen::Vector3d(0.0, s, 0.0) : Eigen::Vector3d(s, 0.0, 0.0));
     }
-    RodDrag drag;
-    model->evaluate(rod, still, drag);
+    model.evaluate(rod, still, out.still[across]);
+    model.evaluate(rod, stream, out.stream[across]);
+  }
+  return out;
+}
+
+RowResponse row_response(const RowLoads& loads) {
+  const double U = loads.speed;
+  const double scale = 3.0 * kPi * loads.parameters.viscosity * loads.parameters.sphere_diameter * U;
+  RowResponse out;
+  for (int across = 0; across < 2; ++across) {
+    const int n = loads.rod[across].size();
     Eigen::VectorXd v = Eigen::VectorXd::Zero(3 * n);
     for (int i = 0; i < n; ++i) v(3 * i) = -U;  // translating at -U e_x
-    const Eigen::VectorXd f_fric = drag.forces(v);
-    model->evaluate(rod, stream, drag);
-    const Eigen::VectorXd f_held = drag.forces(Eigen::VectorXd::Zero(3 * n));
+    const Eigen::VectorXd f_fric = loads.still[across].forces(v);
+    const Eigen::VectorXd f_held = loads.stream[across].forces(Eigen::VectorXd::Zero(3 * n));
     auto& fr = across ? out.friction_perp : out.friction_par;
     auto& dr = across ? out.driving_perp : out.driving_par;
     for (int i = 0; i < n; ++i) {
@@ -66,6 +82,16 @@ RowResponse row_response(const std::string& model_name, double beta, int n, doub
     }
   }
   return out;
+}
+
+RowResponse row_response(const std::string& model_name, double beta, int n, double spacing,
+                         const ConfinementTable& table, const NearFieldCalibration& near_field) {
+  const HydrodynamicParameters p = row_parameters(beta);
+  std::unique_ptr<HydrodynamicModel> model;
+  if (model_name == "nonlocal") model = std::make_unique<NonlocalRodModel>(p, table, near_field.nonlocal);
+  else if (model_name == "twoway") model = std::make_unique<NearFieldTwoWayModel>(p, table, TwoWayWindowOptions{}, near_field.twoway);
+  else model = make_hydrodynamic_model(model_name, p, table);
+  return row_response(row_loads(*model, p, n, spacing));
 }
 
 }  // namespace hsrod::calib

@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "hydro/confinement_coefficients.h"
+#include "hydro/hydrodynamic_model.h"
+#include "hydro/near_field_coupling.h"
 
 namespace hsrod::calib {
 
@@ -31,8 +33,24 @@ struct RowResponse {
   double r() const { return lambda_perp() / lambda_par(); }
 };
 
-// model: a registered model name (isotropic, local, nonlocal, twoway).
+// model: a registered model name (isotropic, local, nonlocal, twoway);
+// near_field: the near-field coupling of levels 3-4 (default: the built-in fit).
 RowResponse row_response(const std::string& model, double beta, int n, double spacing,
-                         const ConfinementTable& table);
+                         const ConfinementTable& table,
+                         const NearFieldCalibration& near_field = NearFieldCalibration::built_in());
+
+// The loads behind a RowResponse, kept so that a fit can change the near
+// field on them without re-evaluating the model (calibration/core/near_field_fit.h).
+struct RowLoads {
+  HydrodynamicParameters parameters;
+  double speed = 0.0;   // U [m/s]
+  RodGeometry rod[2];   // along (0) and across (1) the flow
+  RodDrag still[2];     // in fluid at rest
+  RodDrag stream[2];    // in the uniform stream U e_x
+};
+RowLoads row_loads(const HydrodynamicModel& model, const HydrodynamicParameters& parameters, int n, double spacing);
+RowResponse row_response(const RowLoads& loads);
+// The units of row_loads (any: the response is dimensionless): d, mu, U.
+HydrodynamicParameters row_parameters(double beta);
 
 }  // namespace hsrod::calib

@@ -2,7 +2,7 @@
 //
 //   hsrod_crosscheck_levels SERIES.csv PROFILES.csv OUT.csv [--table FILE] [--label TEXT]
 //                           [--levels isotropic,local,nonlocal,twoway] [--write-table FILE]
-//                           [--error-record CSV] [--error-record-cpp CPP]
+//                           [--error-record CSV] [--error-record-cpp CPP] [--near-field FILE|off]
 //
 // SERIES.csv / PROFILES.csv: calibration/data/resolved_campaign_{series,profiles}.csv
 // (campaign_analysis.py). For every resolved row of spheres and every level,
@@ -10,7 +10,9 @@
 // coefficient table (default: the built-in ConfinementTable::default_table())
 // is compared with the resolved one: totals R_par, R_perp, D_par, D_perp,
 // force-free velocities lambda_par/perp, r, and the RMS of the per-sphere
-// profile error over the profile's mean magnitude. OUT.csv: one row per
+// profile error over the profile's mean magnitude. --near-field: the
+// near-field coupling of levels 3-4 (hydro/near_field_coupling.h; default
+// the built-in fit, "off" for the depth-averaged coupling alone). OUT.csv: one row per
 // (label, level, beta, n, spacing, quantity). Prints a summary per level.
 // --error-record / --error-record-cpp: the error model of `auto`
 // (hydro/auto_model_choice.h) from the fitted rods (role "fit", spacing 1):
@@ -53,7 +55,8 @@ int main(int argc, char** argv) {
   app.add_option("--table", table_path, "coefficient file (default: the built-in table)");
   app.add_option("--label", label, "label of this table in the output");
   app.add_option("--levels", levels, "models to check");
-  std::string write_table, record_csv, record_cpp;
+  std::string write_table, record_csv, record_cpp, near_field_path;
+  app.add_option("--near-field", near_field_path, "near-field coupling file of levels 3-4, or off (default: built-in)");
   app.add_option("--write-table", write_table, "also write the table in use to this file");
   app.add_option("--error-record", record_csv, "write the error record of auto (CSV)");
   app.add_option("--error-record-cpp", record_cpp, "write the error record of auto (C++ source)");
@@ -62,6 +65,10 @@ int main(int argc, char** argv) {
     const hsrod::ConfinementTable table =
         table_path.empty() ? hsrod::ConfinementTable::default_table() : hsrod::ConfinementTable::read(table_path);
     if (!write_table.empty()) table.write(write_table);
+    const hsrod::NearFieldCalibration near_field =
+        near_field_path.empty()   ? hsrod::NearFieldCalibration::built_in()
+        : near_field_path == "off" ? hsrod::NearFieldCalibration::off()
+                                   : hsrod::NearFieldCalibration::read(near_field_path);
     const auto series = read_csv_rows(series_path);
     // profiles: (beta, n, spacing, load_component) -> values by sphere
     const auto prof = read_resolved_profiles(profiles_path);
@@ -82,7 +89,7 @@ int main(int argc, char** argv) {
         const int n = std::stoi(s.at("n"));
         RowResponse m;
         try {
-          m = row_response(level, beta, n, spacing, table);
+          m = row_response(level, beta, n, spacing, table, near_field);
         } catch (const std::exception& e) {
           // a level that refuses this configuration has no error to record
           // (auto interpolates between the betas where it runs)

@@ -10,6 +10,10 @@ BUILD_DIR holds hsrod_crosscheck_levels (built with -DHSROD_WITH_OPENFOAM=ON).
 level 3; recorded in calibration/data/confinement_defaults_before_campaign.txt),
 "after" = the campaign fit, calibration/data/confinement_campaign.txt
 (hsrod_fit_campaign; also the built-in default, ConfinementTable::default_table()).
+Levels 3-4: "before" without the near-field coupling (the depth-averaged
+coupling alone, as before the fit), "after" with the fitted near field
+calibration/data/near_field_coupling.txt (hsrod_fit_near_field; the built-in
+default, hydro/near_field_coupling.h).
 Level 2 scales the table's 10-sphere rod columns to other rod lengths with its
 n-law (hydro/local_models.cpp) in both runs. Resolved data:
 calibration/data/resolved_campaign_{series,profiles}.csv. Writes
@@ -31,9 +35,9 @@ DATA = os.path.join(ROOT, "calibration", "data")
 LEVELS = [("isotropic", "level 1"), ("local", "level 2"), ("nonlocal", "level 3"), ("twoway", "level 4")]
 
 
-def run_tool(build, label, table, out):
+def run_tool(build, label, table, near_field, out):
     cmd = [os.path.join(build, "hsrod_crosscheck_levels"), os.path.join(DATA, "resolved_campaign_series.csv"),
-           os.path.join(DATA, "resolved_campaign_profiles.csv"), out, "--label", label]
+           os.path.join(DATA, "resolved_campaign_profiles.csv"), out, "--label", label, "--near-field", near_field]
     if table:
         cmd += ["--table", table]
     r = subprocess.run(cmd, capture_output=True, text=True, check=True)
@@ -51,9 +55,10 @@ def main():
     build = os.path.abspath(sys.argv[1])
     tmp = os.path.join(build, "crosscheck")
     os.makedirs(tmp, exist_ok=True)
-    logs = [run_tool(build, "before", os.path.join(DATA, "confinement_defaults_before_campaign.txt"),
+    logs = [run_tool(build, "before", os.path.join(DATA, "confinement_defaults_before_campaign.txt"), "off",
                      os.path.join(tmp, "before.csv")),
-            run_tool(build, "after", os.path.join(DATA, "confinement_campaign.txt"), os.path.join(tmp, "after.csv"))]
+            run_tool(build, "after", os.path.join(DATA, "confinement_campaign.txt"),
+                     os.path.join(DATA, "near_field_coupling.txt"), os.path.join(tmp, "after.csv"))]
     rows = read(os.path.join(tmp, "before.csv")) + read(os.path.join(tmp, "after.csv"))
 
     def get(label, level, q, beta=None, n=None):
@@ -70,7 +75,9 @@ def main():
           "`calibration/data/confinement_defaults_before_campaign.txt`); *after*: the campaign fit "
           "`calibration/data/confinement_campaign.txt` (= the built-in default). Level 2 scales the table's 10-sphere rod "
           "columns to other rod lengths with its n-law in both runs (the *before* rows of level 2 at n != 10 are "
-          "therefore not the old code's).", "",
+          "therefore not the old code's). Levels 3-4: *before* with the depth-averaged sphere-sphere coupling alone, "
+          "*after* with the fitted near-field coupling `calibration/data/near_field_coupling.txt` "
+          "(hsrod_fit_near_field, drag-models/hydro/near_field_coupling.h; = the built-in default).", "",
           "## Worst errors per level (all resolved rows with n > 1 for profiles)", "", "```"]
     md += [l for log in logs for l in log.splitlines() if not l.startswith("wrote")]
     md += ["```", "", "## Totals per resolved row", ""]
@@ -86,7 +93,7 @@ def main():
                 cells.append("%+.1f / %+.1f %%" % (100 * float(b[0]["rel_error"]), 100 * float(a[0]["rel_error"]))
                              if a and b else "-")
             md.append("| %.2f | %d | %s | %s | %s | %s |" % (beta, n, sp, role, name, " | ".join(cells)))
-    md += ["", "Per-sphere profile RMS error (over the mean magnitude), after calibration:", "",
+    md += ["", "Per-sphere profile RMS error (over the mean magnitude), before / after calibration:", "",
            "| beta | n | s/d | level | friction par | friction perp | driving par | driving perp |",
            "|---|---|---|---|---|---|---|---|"]
     for beta, n, sp, role in series:
@@ -95,8 +102,10 @@ def main():
         for lev, name in LEVELS:
             cells = []
             for q in ("friction_par", "friction_perp", "driving_par", "driving_perp"):
+                b = [r for r in get("before", lev, "profile_rms_" + q, beta, n) if r["spacing"] == sp]
                 a = [r for r in get("after", lev, "profile_rms_" + q, beta, n) if r["spacing"] == sp]
-                cells.append("%.1f %%" % (100 * float(a[0]["rel_error"])) if a else "-")
+                cells.append("%.1f / %.1f %%" % (100 * float(b[0]["rel_error"]), 100 * float(a[0]["rel_error"]))
+                             if a and b else "-")
             md.append("| %.2f | %d | %s | %s | %s |" % (beta, n, sp, name, " | ".join(cells)))
 
     # plot 1: total friction / held load errors vs beta, rods n = 10
@@ -129,13 +138,17 @@ def main():
                 res = [(float(r["x_over_d"]), float(r["value"])) for r in prof if int(r["n"]) == 10
                        and float(r["beta"]) == beta and r["load"] == load and r["component"] == comp]
                 ax.plot(*zip(*res), "k-o", label="rodIbFoam")
-                for lev, name in LEVELS:
-                    m = sorted((int(r["quantity"].rsplit("_", 1)[1]), float(r["model"])) for r in rows
-                               if r["label"] == "after" and r["level"] == lev and float(r["beta"]) == beta
-                               and int(r["n"]) == 10 and r["quantity"].startswith(q + "_")
-                               and r["quantity"].rsplit("_", 1)[1].isdigit())
-                    if m:
-                        ax.plot([x for x, _ in res], [v for _, v in m], ".--", label=name)
+                for label, style in (("before", ":"), ("after", ".--")):
+                    for lev, name in LEVELS:
+                        if label == "before" and lev not in ("nonlocal", "twoway"):
+                            continue
+                        m = sorted((int(r["quantity"].rsplit("_", 1)[1]), float(r["model"])) for r in rows
+                                   if r["label"] == label and r["level"] == lev and float(r["beta"]) == beta
+                                   and int(r["n"]) == 10 and r["quantity"].startswith(q + "_")
+                                   and r["quantity"].rsplit("_", 1)[1].isdigit())
+                        if m:
+                            ax.plot([x for x, _ in res], [v for _, v in m], style,
+                                    label="%s %s" % (name, label), alpha=0.5 if label == "before" else 1.0)
                 ax.set_title("beta %.2f: %s" % (beta, q), fontsize=9)
                 ax.set_xlabel("x / d")
                 ax.grid(alpha=0.3)

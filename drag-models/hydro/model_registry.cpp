@@ -5,7 +5,7 @@
 
 #include "hydro/local_models.h"
 #include "hydro/nonlocal_model.h"
-#include "hydro/twoway_window_model.h"
+#include "hydro/twoway_near_field.h"
 
 #include <stdexcept>
 
@@ -20,7 +20,7 @@ std::unique_ptr<HydrodynamicModel> make_plain(const HydrodynamicParameters& p, c
 
 std::unique_ptr<HydrodynamicModel> make_twoway(const HydrodynamicParameters& p, const ConfinementTable& table,
                                                const ModelOptions& options) {
-  return std::make_unique<TwoWayWindowModel>(p, table, options.window);
+  return std::make_unique<NearFieldTwoWayModel>(p, table, options.window);
 }
 }  // namespace
 

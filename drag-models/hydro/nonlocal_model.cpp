@@ -7,11 +7,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace hsrod {
 
 NonlocalRodModel::NonlocalRodModel(const HydrodynamicParameters& p, const ConfinementTable& table)
-    : LocalDragBase(p, table) {
+    : NonlocalRodModel(p, table, NearFieldCalibration::built_in().nonlocal) {}
+
+NonlocalRodModel::NonlocalRodModel(const HydrodynamicParameters& p, const ConfinementTable& table,
+                                   const NearFieldCoupling& near_field)
+    : LocalDragBase(p, table), near_field_(near_field) {
+  const std::string problem = NearFieldCalibration::range_problem(near_field);
+  if (!problem.empty()) throw std::invalid_argument("nonlocal: near field: " + problem);
   obstruction_friction_ = LocalDragBase::obstruction_friction();
   film_friction_ = sphere_friction_ - obstruction_friction_;
 }
@@ -20,7 +28,8 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
   const int n = rod.size();
   out.resize(n);
   const double zo = obstruction_friction_;
-  // Coupling matrix I + c zeta_o G (in-plane components; z is uncoupled).
+  // Coupling matrix I + zeta_o M, M_ik = c G or, within a few H, blended
+  // into the 3-D near field (in-plane components; z is uncoupled).
   Eigen::MatrixXd coupling = Eigen::MatrixXd::Identity(3 * n, 3 * n);
   // G(r) = G(-r) is symmetric (brinkman_green.h): one evaluation per pair
   // fills both blocks (i,k) and (k,i).
@@ -28,8 +37,10 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
     for (int k = i + 1; k < n; ++k) {
       const Eigen::Vector2d offset = (rod.positions[i] - rod.positions[k]).head<2>();
       if (offset.norm() <= 0.0) continue;
+      const double mu = parameters_.viscosity, H = parameters_.gap_height;
       const Eigen::Matrix2d g =
-          kMidplaneFactor * zo * brinkman_green_function(offset, parameters_.viscosity, parameters_.gap_height);
+          zo * near_field_pair_mobility(kMidplaneFactor * brinkman_green_function(offset, mu, H), offset, mu, H,
+                                        parameters_.sphere_diameter, 1.0 / zo, near_field_);
       coupling.block<2, 2>(3 * i, 3 * k) += g;
       coupling.block<2, 2>(3 * k, 3 * i) += g;
     }

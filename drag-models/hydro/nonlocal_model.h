@@ -16,15 +16,23 @@
 // going around the ends: the force per sphere is largest in the middle and
 // a flexible rod bends into the C-shape (Cappello et al. 2019), which the
 // local models cannot give.
+//
+// Spheres closer than a few gap heights interact as in 3-D Stokes flow, not
+// through the depth-averaged G: their pair coupling c G is blended into a
+// Rotne-Prager mobility with the walls' reflection (hydro/near_field_coupling.h),
+// fitted to the resolved per-sphere loads (the built-in default).
 #pragma once
 
 #include "hydro/local_models.h"
+#include "hydro/near_field_coupling.h"
 
 namespace hsrod {
 
 class NonlocalRodModel : public LocalDragBase {
  public:
   NonlocalRodModel(const HydrodynamicParameters& parameters, const ConfinementTable& table);
+  NonlocalRodModel(const HydrodynamicParameters& parameters, const ConfinementTable& table,
+                   const NearFieldCoupling& near_field);
   std::string name() const override { return "nonlocal"; }
   int level() const override { return 3; }
   using HydrodynamicModel::evaluate;
@@ -49,10 +57,12 @@ class NonlocalRodModel : public LocalDragBase {
 
   double film_friction() const { return film_friction_; }              // zeta_f [N s/m]
   double obstruction_friction() const { return obstruction_friction_; }  // zeta_o [N s/m]
+  const NearFieldCoupling& near_field() const { return near_field_; }
 
  private:
   double film_friction_;
   double obstruction_friction_;
+  NearFieldCoupling near_field_;
 };
 
 }  // namespace hsrod

@@ -7,6 +7,7 @@
 #include "flow/straight_channel_flow.h"
 #include "geometry/pore_constriction.h"
 #include "hydro/brinkman_green.h"
+#include "hydro/nonlocal_model.h"
 #include "hydro/twoway_window_model.h"
 #include "rod_fixtures.h"
 
@@ -150,7 +151,10 @@ TEST(TwoWayWindowModel, IsolatedSphereIsTheConfinedSphereAnywhereOnTheGrid) {
 TEST(TwoWayWindowModel, RigidRodMovesAsLevel3) {
   const double beta = 0.15;
   const auto model = level4(beta);
-  const auto level3 = make_hydrodynamic_model("nonlocal", {kMu, kD / beta, kD}, ConfinementTable::default_table());
+  // Level 3 without its near field (hydro/near_field_coupling.h): the point
+  // Green's function against the window's depth-averaged flow.
+  const auto level3 = std::make_unique<NonlocalRodModel>(HydrodynamicParameters{kMu, kD / beta, kD},
+                                                         ConfinementTable::default_table(), NearFieldCoupling{});
   const UniformSlitStream stream(kD / beta);
   for (double degrees : {0.0, 45.0, 90.0}) {
     RodGeometry rod = straight_rod(10, kD, degrees * kPi / 180.0);

@@ -196,10 +196,10 @@ TEST(RigidRodTransport, Level3ShieldingOfTwoLoneSpheresAgainstTheResolvedPair) {
   // lone sphere's; the pair is the limit of two one-sphere rods). Across
   // the flow (D_perp) and along it (D_par), beta 0.15 and 0.3.
   const hsrod_test::UniformStream stream;  // U_mean = 1 m/s
-  const auto rows = resolved_rods(std::string(HSROD_TEST_DATA_DIR) + "/../../../calibration/data/resolved_campaign_series.csv");
+  const auto rows = hsrod::calib::read_resolved_series(std::string(HSROD_TEST_DATA_DIR) + "/../../../calibration/data/resolved_campaign_series.csv");
   int compared = 0;
   for (double beta : {0.15, 0.3}) {
-    const ResolvedRod *one = nullptr, *two = nullptr;
+    const hsrod::calib::ResolvedRod *one = nullptr, *two = nullptr;
     for (const auto& s : rows) {
       if (s.beta != beta || s.spacing != 1.0) continue;
       if (s.n == 1) one = &s;

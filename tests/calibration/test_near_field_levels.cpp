@@ -11,16 +11,7 @@
 //  - the rod left out of the fit (7 spheres at beta 0.25) predicted within
 //    the same tolerances;
 //  - the built-in near field is the shipped file calibration/data/near_field_coupling.txt.
-// Level 4 meets these across the flow; along the axis its 10-sphere and
-// held-out rods are 10-13 % high on the friction and 11-14 % RMS on the
-// profiles (the middle spheres are not shielded enough: the window's
-// long-range coupling between footprints is weaker than level 3's Green's
-// function, whatever the near field; the window's size and grid are being
-// reworked, issue 14 item 3): those checks are the DISABLED_ tests below,
-// to be enabled when the window is converged and the near field refitted
-// (hsrod_fit_near_field).
-// Without the near field the same levels miss the totals by 35-57 % and the
-// profiles by up to 57 % RMS (calibration/validation/crosscheck.md, "before").
+// Level 4 is fitted on its converged window (main c444e3c).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -90,9 +81,7 @@ TEST(calibration_NearFieldLevels, Level4ReproducesTheResolvedRodsAcrossTheFlowSp
   EXPECT_GE(c.tens, 2);
 }
 
-// Fails today (10-sphere rods along the axis: friction +10.4 / +12.8 %,
-// profile RMS 12.2 / 13.8 % at beta 0.15 / 0.3); see the header.
-TEST(calibration_NearFieldLevels, DISABLED_Level4ReproducesTheResolvedRodsAlongTheAxisSphereBySphere) {
+TEST(calibration_NearFieldLevels, Level4ReproducesTheResolvedRodsAlongTheAxisSphereBySphere) {
   EXPECT_GE(expect_level("twoway", "fit", Directions::AlongOnly).rods, 6);
 }
 
@@ -105,8 +94,7 @@ TEST(calibration_NearFieldLevels, Level4PredictsTheHeldOutRodAcrossTheFlow) {
       << "no held-out resolved rod with profiles in the record";
 }
 
-// Fails today (friction along +11.9 %, profile RMS 13.4 %); see the header.
-TEST(calibration_NearFieldLevels, DISABLED_Level4PredictsTheHeldOutRodAlongTheAxis) {
+TEST(calibration_NearFieldLevels, Level4PredictsTheHeldOutRodAlongTheAxis) {
   EXPECT_GE(expect_level("twoway", "heldout", Directions::AlongOnly).rods, 1);
 }
 

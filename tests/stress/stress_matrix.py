@@ -8,9 +8,11 @@ each case:
   refused  a non-zero exit code with an "ERROR:" line naming the problem;
   failed   anything else: a crash (signal, no ERROR line), a hang past the
            time bound, or exit code 0 with non-finite or lost output.
-Usage:  stress_matrix.py HSROD [--short] [--out RESULTS.md] [--jobs N]
+Usage:  stress_matrix.py HSROD [--short] [--out RESULTS.md] [--jobs N] [--progress FILE]
 --short is the ctest subset (label `stress`, < 2 min); the default is the
-full matrix. Exit code 1 if any case failed.
+full matrix. Exit code 1 if any case failed. --progress appends each case's
+line to FILE as it finishes and skips the cases FILE already holds (a long
+run can be read while it goes and resumed after an interruption).
 """
 import argparse
 import concurrent.futures
@@ -21,6 +23,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import threading
 
 SCENE = """units si
 atom_style hybrid granular molecular
@@ -149,11 +152,30 @@ def main():
     ap.add_argument("--out")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--timeout", type=float, default=120.0)
+    ap.add_argument("--progress")
     a = ap.parse_args()
     a.hsrod = os.path.abspath(a.hsrod)
     cases = matrix(a.short)
+    done = {}
+    if a.progress and os.path.exists(a.progress):
+        with open(a.progress) as f:
+            for line in f:
+                cells = [c.strip() for c in line.strip().strip("|").split("|")]
+                if len(cells) == 3:
+                    done[cells[0]] = tuple(cells)
+    lock = threading.Lock()
+
+    def run(case):
+        if case[0] in done:
+            return done[case[0]]
+        result = (case[0],) + classify(a.hsrod, case[1], time_bound(case[1], a.timeout))
+        if a.progress:
+            with lock, open(a.progress, "a") as f:
+                f.write(f"| {result[0]} | {result[1]} | {result[2]} |\n")
+        return result
+
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
-        results = list(pool.map(lambda c: (c[0],) + classify(a.hsrod, c[1], time_bound(c[1], a.timeout)), cases))
+        results = list(pool.map(run, cases))
     counts = {k: sum(1 for r in results if r[1] == k) for k in ("passed", "refused", "failed")}
     lines = [f"| {name} | {kind} | {why} |" for name, kind, why in results]
     table = ["| case | outcome | detail |", "| --- | --- | --- |"] + lines

@@ -335,12 +335,7 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
           }
           // Keep the more accurate state: corrected, or the two half steps.
           if (corrected) {
-            for (int i = 0; i < n; ++i) {
-              rod.positions[i] += ws.correction.segment<3>(6 * i);
-              rod.orientations[i] =
-                  (quaternion_from_rotation_vector(ws.correction.segment<3>(6 * i + 3)) * rod.orientations[i])
-                      .normalized();
-            }
+            solver.displace(rod, ws.correction);
           } else {
             rod.positions = ws.half.positions;
             rod.orientations = ws.half.orientations;

@@ -2,9 +2,10 @@
 //
 // OverdampedRodSolver::step (overdamped_rod_step.h) is one Newton step of
 // backward Euler: stable for any dt, but it loses accuracy without notice
-// when a step is large (a stiff rod rotating lags: the linearised rotation
-// stretches the bonds it should only turn) and it can carry a sphere through
-// a wall in one step. The guard takes the step on a copy of the rod, checks
+// when a step is large and it can carry a sphere through a wall in one
+// step. (A stiff rod turning used to lag because the tangent update
+// stretched the bonds it should only turn; the step's finite-rotation
+// update, dynamics/finite_rotation_update.h, removed that.) The guard takes the step on a copy of the rod, checks
 //   - the largest sphere displacement (in diameters),
 //   - the largest change of any bond's axial strain, and the largest
 //     absolute axial strain (a rod over-strained by steps that each stretch
@@ -13,15 +14,15 @@
 //     contact response the single linearised step missed, estimated by one
 //     more (simplified) Newton iteration with the step's own factors
 //     (OverdampedRodSolver::newton_correction: a residual evaluation and a
-//     back substitution, no new factorisation); the corrected state is the
-//     one kept. Where the solver keeps no factors (multi-sphere sections)
+//     back substitution, no new factorisation, co-rotated with the spheres'
+//     rotation in the step); the corrected state is the one kept. Where the solver keeps no factors (multi-sphere sections)
 //     by step doubling (one step of h against two of h/2, same drag),
 //   - that no sphere centre ends in, or passes through, a wall, and no new
 //     wall overlap exceeds max_overlap radii.
 // (The force residual of backward Euler at the new state is reported too,
-// but is no usable criterion for stiff rods: a rotation by theta stretches
-// the linearised bonds by theta^2 / 2, whose force k_n L0 theta^2 / 2 dwarfs
-// the drag at any practical step although the next step relaxes it.)
+// but is no usable criterion for stiff rods: any strain the linearisation
+// leaves, times k_n L0, dwarfs the drag at a practical step although the
+// next step relaxes it.)
 // and accepts it only when all are within the limits; otherwise the step is
 // retried as substeps of half the size (the drag re-evaluated at each
 // substep's start through a callback), down to dt / max_substeps. A step
@@ -55,8 +56,8 @@ struct StepGuardLimits {
   // doubling: two more solves), so by default it runs only where
   // the linearisation is suspect: a bond's load change k_n L0 |d strain|
   // above `suspect_bond_load` of the largest drag force of the step
-  // |R dx / dt| (a stiff rod turning: the linearised rotation stretches its
-  // bonds), or a wall contact during the step.
+  // |R dx / dt| (a stiff rod whose bonds carry more than the drag), or a
+  // wall contact during the step.
   enum class NewtonCheck { kAlways, kWhenSuspect, kNever };
   NewtonCheck newton_check = NewtonCheck::kWhenSuspect;
   double suspect_bond_load = 0.05;  // [-]

@@ -1,6 +1,7 @@
 #include "dynamics/overdamped_rod_step.h"
 
 #include "dynamics/dense_lu.h"
+#include "dynamics/finite_rotation_update.h"
 #include "dynamics/small_block_lu.h"
 
 #include "rod/beam_bond_jacobian.h"
@@ -267,6 +268,9 @@ struct OverdampedRodSolver::Workspace {
   Eigen::VectorXd last_dy;
   double last_dt = 0.0;
   Eigen::VectorXd residual;  // work vector of newton_correction
+  std::vector<Eigen::Matrix3d> turns;         // newton_correction: each sphere's rotation in the step
+  FiniteRotationUpdate rotation_update;       // the position update (its bond graph's factors)
+  std::vector<Eigen::Vector3d> step_start;    // positions before the step [m]
   std::vector<Eigen::Vector3d> correction_forces;
   OverdampedStepResult contact_scratch;
 
@@ -566,6 +570,13 @@ OverdampedRodSolver::~OverdampedRodSolver() = default;
 OverdampedRodSolver::OverdampedRodSolver(OverdampedRodSolver&&) noexcept = default;
 OverdampedRodSolver& OverdampedRodSolver::operator=(OverdampedRodSolver&&) noexcept = default;
 
+void OverdampedRodSolver::displace(OverdampedRod& rod, const Eigen::VectorXd& dy) {
+  workspace_->rotation_update.apply(rod, dy);
+  for (int i = 0; i < rod.size(); ++i)
+    rod.orientations[i] =
+        (quaternion_from_rotation_vector(dy.segment<3>(6 * i + 3)) * rod.orientations[i]).normalized();
+}
+
 int OverdampedRodSolver::pattern_analyses() const { return workspace_->analyses; }
 const OverdampedSolverStatistics& OverdampedRodSolver::statistics() const { return workspace_->statistics; }
 void OverdampedRodSolver::set_linear_solver(LinearSolver method) { workspace_->method = method; }
@@ -744,10 +755,15 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   result.velocities.resize(n);
   result.angular_velocities.resize(n);
   result.hydrodynamic_forces.resize(n);
+  // Positions with finite bond rotations (dynamics/finite_rotation_update.h:
+  // the tangent update x + dx stretches a turning stiff rod, which then
+  // stops turning); orientations by their exact rotation.
+  w.step_start = rod.positions;
+  w.rotation_update.apply(rod, dy);
   for (int i = 0; i < n; ++i) {
-    const Eigen::Vector3d dx = dy.segment<3>(6 * i);
+    const Eigen::Vector3d dx = rod.positions[i] - w.step_start[i];
     const Eigen::Vector3d dphi = dy.segment<3>(6 * i + 3);
-    rod.positions[i] += dx;
+    w.last_dy.segment<3>(6 * i) = dx;  // newton_correction's drag term: the displacement taken
     rod.orientations[i] = (quaternion_from_rotation_vector(dphi) * rod.orientations[i]).normalized();
     result.velocities[i] = dx / dt;
     result.angular_velocities[i] = dphi / dt;
@@ -829,6 +845,19 @@ bool OverdampedRodSolver::newton_correction(const OverdampedRod& rod, const RodD
     r.segment<3>(6 * c.i) += c.force_on_i;
     r.segment<3>(6 * c.j) -= c.force_on_i;
   }
+  // Co-rotated: the factors are those of the stiffness at the step's start,
+  // whose stiff directions (a bond's axis) have turned with the spheres by
+  // dphi_i since. A rigid rotation Q turns the stiffness to Q K Q^T, so the
+  // correction is Q (R/dt + K)^-1 Q^T r with Q_i = Exp(dphi_i) per sphere.
+  // Solved unrotated, the residual along a stiff rod's new axis (its
+  // remaining strain times k_n) would be taken partly as a transverse load
+  // on the drag alone and amplified by k_n dt / zeta (1e8 for E = 1.5e12 Pa).
+  w.turns.resize(n);
+  for (int i = 0; i < n; ++i) {
+    w.turns[i] = quaternion_from_rotation_vector(dy.segment<3>(6 * i + 3)).toRotationMatrix();
+    r.segment<3>(6 * i) = (w.turns[i].transpose() * r.segment<3>(6 * i)).eval();
+    r.segment<3>(6 * i + 3) = (w.turns[i].transpose() * r.segment<3>(6 * i + 3)).eval();
+  }
   switch (w.kept) {
     case Workspace::Kept::banded:
       delta = r;
@@ -840,6 +869,10 @@ bool OverdampedRodSolver::newton_correction(const OverdampedRod& rod, const RodD
       break;
     case Workspace::Kept::sparse: delta = w.lu.solve(r); break;
     case Workspace::Kept::none: return false;
+  }
+  for (int i = 0; i < n; ++i) {
+    delta.segment<3>(6 * i) = (w.turns[i] * delta.segment<3>(6 * i)).eval();
+    delta.segment<3>(6 * i + 3) = (w.turns[i] * delta.segment<3>(6 * i + 3)).eval();
   }
   w.statistics.solve_seconds += seconds_between(t_start, Clock::now());
   return true;

@@ -147,12 +147,20 @@ class OverdampedRodSolver {
   // (dy, dt of the last step; C the wall friction's secant resistance), and
   // solves (R/dt + K + C/dt) delta = r with the last step's factors: one
   // more Newton iteration of backward Euler without a new factorisation
-  // (one bond and contact evaluation and a back substitution). `delta`:
+  // (one bond and contact evaluation and a back substitution), co-rotated
+  // with each sphere's rotation in the step: delta = Q (R/dt + K)^-1 Q^T r,
+  // Q_i = Exp(dphi_i), as the stiffness of a turned rod is Q K Q^T. `delta`:
   // 6n (dx_i [m], dphi_i [rad]). Returns false (delta untouched) when the
   // last step's factors are not kept (multi-sphere sections' grouped blocks)
   // or belong to a rod of another size.
   bool newton_correction(const OverdampedRod& rod, const RodDrag& drag, const ChannelGeometry* geometry,
                          const WallContactParameters* walls, Eigen::VectorXd& delta);
+
+  // Moves `rod` by dy (6n: dx_i [m], dphi_i [rad]) as the step does:
+  // orientations by Exp(dphi_i), positions by dx_i with every bond's
+  // rotation taken as a finite rotation (dynamics/finite_rotation_update.h).
+  // For applying newton_correction's delta.
+  void displace(OverdampedRod& rod, const Eigen::VectorXd& dy);
 
   const OverdampedSolverStatistics& statistics() const;
   void set_linear_solver(LinearSolver method);

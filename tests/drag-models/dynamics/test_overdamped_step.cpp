@@ -287,7 +287,7 @@ TEST(OverdampedStep, GroupedBandOfMultiSphereSectionsMatchesTheGeneralSolvers) {
   // groups of g spheres; the rod must move as with the sparse and the dense
   // LU of the whole system, to round-off: 1e-8 of the distance travelled,
   // 1e-7 rad. (The sparse and the dense LU disagree with each other by up to
-  // 1.5e-9 of the distance and 3e-8 rad here: the 2x2 rod rubs on the wall,
+  // 1.5e-9 of the distance and 1e-7 rad here: the 2x2 rod rubs on the wall,
   // and the secant friction law near stick amplifies round-off. A wrong
   // block moves the rod by a sizeable fraction of d.)
   const double d = 3e-6;

@@ -18,6 +18,8 @@
 // 0.014 W against the benchmark's reference), so a real change of the
 // step (a dropped term, a wrong block, a stale structure kept between
 // steps) fails it.
+#include <cstdio>
+#include <cstdlib>
 #include "liggghts_session.h"
 
 #include "compute.h"
@@ -85,6 +87,9 @@ TEST(FixRodImplicitPassage, MatchesTheRecordedIntegrator) {
     shape->compute_array();
     const double x = shape->array[0][1], angle = shape->array[0][6], lateral = shape->array[0][8];
     const std::string name = c.model + " E = " + c.youngs_modulus + (c.adaptive ? " adaptive" : "");
+    if (std::getenv("HSROD_RECORD_PASSAGE"))  // re-recording: the data rows of the reference file
+      std::printf("RECORD %s %s %d %s %d %.15g %.15g %.15g\n", c.model.c_str(), c.youngs_modulus.c_str(),
+                  c.adaptive ? 1 : 0, c.dt.c_str(), c.steps, x, angle, lateral);
     EXPECT_LT(std::fabs(x - c.x) / kD, 1e-6) << name << ": x " << x;
     EXPECT_LT(std::fabs(angle - c.angle), 1e-4) << name << ": angle " << angle;
     EXPECT_LT(std::fabs(lateral - c.lateral), 1e-7) << name << ": lateral " << lateral;

@@ -314,21 +314,7 @@ void FixRodImplicit::initial_integrate(int) {
     record.wall_force = result.wall_force;
     record.largest_wall_force = std::max(record.largest_wall_force, result.wall_force);
 
-    for (int k = 0; k < n; k++) {
-      const int i = atom->map(spheres[k].tag);
-      if (i < 0 || i >= atom->nlocal) continue;
-      const Eigen::Vector3d dx = rod.positions[k] - before[k];
-      for (int a = 0; a < 3; a++) {
-        atom->x[i][a] += dx[a];
-        atom->v[i][a] = result.velocities[k][a];
-        atom->omega[i][a] = result.angular_velocities[k][a];
-      }
-      bonds_->set_orientation(i, rod.orientations[k]);
-      // The load at the step's new velocities: F = d - R v, T = t - r omega.
-      const Eigen::Vector3d torque =
-          drag.driving_torque[k] - drag.rotational_resistance[k] * result.angular_velocities[k];
-      drag_->store_loads(i, drag.driving_force[k], result.hydrodynamic_forces[k], torque);
-    }
+    scatter_rod(spheres, rod, before, result, drag);
   }
   StepTotals totals;
   joint_strain_ = joint_energy_ = 0.0;

@@ -199,7 +199,13 @@ void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
   }
   if (result.rod_contact) totals.rod_contacts += static_cast<int>(molecules.size());
 
-  for (int k = 0; k < n; k++) {
+  scatter_rod(spheres, rod, before, result, drag);
+}
+
+void FixRodImplicit::scatter_rod(const std::vector<GatheredSphere> &spheres, const hsrod::OverdampedRod &rod,
+                                 const std::vector<Eigen::Vector3d> &before, const hsrod::OverdampedStepResult &result,
+                                 const hsrod::RodDrag &drag) {
+  for (std::size_t k = 0; k < spheres.size(); k++) {
     const int i = atom->map(spheres[k].tag);
     if (i < 0 || i >= atom->nlocal) continue;
     const Eigen::Vector3d dx = rod.positions[k] - before[k];
@@ -214,3 +220,4 @@ void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
     drag_->store_loads(i, drag.driving_force[k], result.hydrodynamic_forces[k], torque);
   }
 }
+

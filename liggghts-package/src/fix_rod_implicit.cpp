@@ -261,21 +261,7 @@ void FixRodImplicit::initial_integrate(int) {
         hsrod::GuardedStepReport &report = scratch.report;
         hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_,
                                 guards_by_rod_[entry.first], report);
-        if (report.unresolved_substeps > 0 && !unresolved_warned_ && comm->me == 0) {
-          char msg[512];
-          std::snprintf(msg, sizeof(msg),
-                        "fix rod/implicit: rod %d at step " BIGINT_FORMAT ": %d substep(s) of dt/%d still differ from "
-                        "two half steps by %.3g of their displacement (step_error %.3g): accepted as the half steps; "
-                        "the motion is not resolved here (contact or buckling); reduce the timestep to check",
-                        entry.first, update->ntimestep, report.unresolved_substeps, limits_.max_substeps,
-                        report.unresolved_error, limits_.max_step_error);
-          error->warning(FLERR, msg);
-          unresolved_warned_ = true;
-        }
-        unresolved_ += report.unresolved_substeps;
-        substeps_taken_ += report.substeps;
-        trials_rejected_ += report.rejected_trials;
-        substeps = std::max(substeps, report.substeps);
+        account_guard_report("rod " + std::to_string(entry.first), report, substeps);
       } catch (const std::exception &e) {
         char msg[768];
         std::snprintf(msg, sizeof(msg), "fix rod/implicit: rod %d at step " BIGINT_FORMAT ": %s", entry.first,
@@ -292,16 +278,7 @@ void FixRodImplicit::initial_integrate(int) {
     const int face = leaving_face(rod.positions, domain->boxlo, domain->boxhi, domain->periodicity);
     if (face >= 0) {
       held_rods_.insert(entry.first);
-      if (comm->me == 0) {
-        char msg[320];
-        std::snprintf(msg, sizeof(msg),
-                      "fix rod/implicit: rod %d reached the box's %s face at step " BIGINT_FORMAT
-                      " (t = %g s): its next step would carry a sphere out of the box; the rod is held there, "
-                      "whole, from then on (measures stay at its exit)\n", entry.first, face_name(face),
-                      update->ntimestep, update->get_cur_time());
-        if (screen) fputs(msg, screen);
-        if (logfile) fputs(msg, logfile);
-      }
+      report_held_at_face("rod " + std::to_string(entry.first), face);
       hold_rod(spheres);
       continue;
     }

@@ -142,6 +142,8 @@ class FixRodImplicit : public Fix {
   // The step's new state back to the local atoms (positions by the step's
   // displacement from `before`, velocities, spins, orientations) and the
   // hydrodynamic loads at the new velocities to the drag fix.
+  void account_guard_report(const std::string &who, const hsrod::GuardedStepReport &report, int &substeps);
+  void report_held_at_face(const std::string &who, int face);
   void scatter_rod(const std::vector<GatheredSphere> &spheres, const hsrod::OverdampedRod &rod,
                    const std::vector<Eigen::Vector3d> &before, const hsrod::OverdampedStepResult &result,
                    const hsrod::RodDrag &drag);

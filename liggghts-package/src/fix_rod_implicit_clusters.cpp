@@ -127,21 +127,7 @@ void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
           hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_,
                                   joint ? guards_by_cluster_[molecules] : guards_by_rod_[first]);
       result = std::move(report.result);
-      if (report.unresolved_substeps > 0 && !unresolved_warned_ && comm->me == 0) {
-        char msg[640];
-        std::snprintf(msg, sizeof(msg),
-                      "fix rod/implicit: %s at step " BIGINT_FORMAT ": %d substep(s) of dt/%d still differ from "
-                      "two half steps by %.3g of their displacement (step_error %.3g): accepted as the half steps; "
-                      "the motion is not resolved here (contact or buckling); reduce the timestep to check",
-                      name.c_str(), update->ntimestep, report.unresolved_substeps, limits_.max_substeps,
-                      report.unresolved_error, limits_.max_step_error);
-        error->warning(FLERR, msg);
-        unresolved_warned_ = true;
-      }
-      unresolved_ += report.unresolved_substeps;
-      substeps_taken_ += report.substeps;
-      trials_rejected_ += report.rejected_trials;
-      totals.substeps = std::max(totals.substeps, report.substeps);
+      account_guard_report(name, report, totals.substeps);
     } catch (const std::exception &e) {
       char msg[896];
       std::snprintf(msg, sizeof(msg), "fix rod/implicit: %s at step " BIGINT_FORMAT ": %s", name.c_str(),
@@ -162,16 +148,7 @@ void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
   const int face = leaving_face(rod.positions, domain->boxlo, domain->boxhi, domain->periodicity);
   if (face >= 0) {
     held_rods_.insert(molecules.begin(), molecules.end());
-    if (comm->me == 0) {
-      char msg[480];
-      std::snprintf(msg, sizeof(msg),
-                    "fix rod/implicit: %s reached the box's %s face at step " BIGINT_FORMAT
-                    " (t = %g s): its next step would carry a sphere out of the box; the rod is held there, "
-                    "whole, from then on (measures stay at its exit)\n", name.c_str(), face_name(face),
-                    update->ntimestep, update->get_cur_time());
-      if (screen) fputs(msg, screen);
-      if (logfile) fputs(msg, logfile);
-    }
+    report_held_at_face(name, face);
     hold_rod(spheres);
     return;
   }
@@ -221,3 +198,36 @@ void FixRodImplicit::scatter_rod(const std::vector<GatheredSphere> &spheres, con
   }
 }
 
+// A guarded step's report into the run's totals; one warning per run when
+// substeps were accepted unresolved.
+void FixRodImplicit::account_guard_report(const std::string &who, const hsrod::GuardedStepReport &report,
+                                          int &substeps) {
+  if (report.unresolved_substeps > 0 && !unresolved_warned_ && comm->me == 0) {
+    char msg[640];
+    std::snprintf(msg, sizeof(msg),
+                  "fix rod/implicit: %s at step " BIGINT_FORMAT ": %d substep(s) of dt/%d still differ from "
+                  "two half steps by %.3g of their displacement (step_error %.3g): accepted as the half steps; "
+                  "the motion is not resolved here (contact or buckling); reduce the timestep to check",
+                  who.c_str(), update->ntimestep, report.unresolved_substeps, limits_.max_substeps,
+                  report.unresolved_error, limits_.max_step_error);
+    error->warning(FLERR, msg);
+    unresolved_warned_ = true;
+  }
+  unresolved_ += report.unresolved_substeps;
+  substeps_taken_ += report.substeps;
+  trials_rejected_ += report.rejected_trials;
+  substeps = std::max(substeps, report.substeps);
+}
+
+// Said once when a rod (or a cluster of rods) is held at a box face.
+void FixRodImplicit::report_held_at_face(const std::string &who, int face) {
+  if (comm->me != 0) return;
+  char msg[480];
+  std::snprintf(msg, sizeof(msg),
+                "fix rod/implicit: %s reached the box's %s face at step " BIGINT_FORMAT
+                " (t = %g s): its next step would carry a sphere out of the box; the rod is held there, "
+                "whole, from then on (measures stay at its exit)\n", who.c_str(), face_name(face),
+                update->ntimestep, update->get_cur_time());
+  if (screen) fputs(msg, screen);
+  if (logfile) fputs(msg, logfile);
+}

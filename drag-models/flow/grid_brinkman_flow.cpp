@@ -230,11 +230,21 @@ Eigen::Vector2d GridBrinkmanFlow::velocity(double x, double y) const {
   Eigen::Vector2d u = field_at(x, y);
   const double band = wall_band();
   if (phi < band) {
-    const Eigen::Vector2d pw = Eigen::Vector2d(x, y) - phi * geometry_.wall_normal(x, y);
-    const double s = phi / band;
-    u -= (1.0 - s * s * (3.0 - 2.0 * s)) * field_at(pw.x(), pw.y());
+    const WallBandBlend b = wall_band_blend(x, y, phi);
+    u -= b.weight * field_at(b.foot.x(), b.foot.y());
   }
   return mean_velocity_ * u;
+}
+
+GridBrinkmanFlow::WallBandBlend GridBrinkmanFlow::wall_band_blend(double x, double y, double phi) const {
+  const double band = wall_band();
+  WallBandBlend b;
+  b.normal = geometry_.wall_normal(x, y);
+  b.foot = Eigen::Vector2d(x, y) - phi * b.normal;
+  const double s = phi / band;
+  b.weight = 1.0 - s * s * (3.0 - 2.0 * s);
+  b.weight_slope = -6.0 * s * (1.0 - s) / band;
+  return b;
 }
 
 // Gradient of velocity(); inside the no-slip band the curvature of the wall
@@ -261,10 +271,9 @@ Eigen::Matrix2d GridBrinkmanFlow::velocity_gradient(double x, double y) const {
   Eigen::Matrix2d g = grad_at(x, y);
   const double band = wall_band();
   if (phi < band) {
-    const Eigen::Vector2d n = geometry_.wall_normal(x, y);
-    const Eigen::Vector2d pw = Eigen::Vector2d(x, y) - phi * n;
-    const double s = phi / band;
-    const double w = 1.0 - s * s * (3.0 - 2.0 * s), dw_dphi = -6.0 * s * (1.0 - s) / band;
+    const WallBandBlend b = wall_band_blend(x, y, phi);
+    const Eigen::Vector2d &n = b.normal, &pw = b.foot;
+    const double w = b.weight, dw_dphi = b.weight_slope;
     const Eigen::Vector2d uw = field_.velocity((pw.x() - geometry_.x_lo()) / h, (pw.y() - geometry_.y_lo()) / h);
     const Eigen::Matrix2d tangential = Eigen::Matrix2d::Identity() - n * n.transpose();
     g -= w * grad_at(pw.x(), pw.y()) * tangential + (uw / h) * (dw_dphi * h) * n.transpose();
@@ -293,10 +302,9 @@ void GridBrinkmanFlow::velocity_and_gradient(double x, double y, Eigen::Vector2d
   field_.velocity_and_gradient((x - geometry_.x_lo()) / h, (y - geometry_.y_lo()) / h, u, g);
   const double band = wall_band();
   if (phi < band) {
-    const Eigen::Vector2d n = geometry_.wall_normal(x, y);
-    const Eigen::Vector2d pw = Eigen::Vector2d(x, y) - phi * n;
-    const double s = phi / band;
-    const double w = 1.0 - s * s * (3.0 - 2.0 * s), dw_dphi = -6.0 * s * (1.0 - s) / band;
+    const WallBandBlend b = wall_band_blend(x, y, phi);
+    const Eigen::Vector2d &n = b.normal, &pw = b.foot;
+    const double w = b.weight, dw_dphi = b.weight_slope;
     Eigen::Vector2d uw;
     Eigen::Matrix2d gw;
     field_.velocity_and_gradient((pw.x() - geometry_.x_lo()) / h, (pw.y() - geometry_.y_lo()) / h, uw, gw);

@@ -122,6 +122,14 @@ class GridBrinkmanFlow final : public BackgroundFlow {
   static long total_solves();
 
  private:
+  // Exact no-slip in the wall band: the point's wall foot pw (and normal n)
+  // and the smoothstep weight w(phi) of the wall's velocity subtracted there,
+  // with its derivative (see grid_brinkman_flow.cpp).
+  struct WallBandBlend {
+    Eigen::Vector2d normal, foot;  // unit wall normal; wall foot [m]
+    double weight = 0.0, weight_slope = 0.0;  // w; dw/dphi [1/m]
+  };
+  WallBandBlend wall_band_blend(double x, double y, double phi) const;
   // Wall-layer reconstruction of the exponentially fitted scheme (see .cpp).
   bool layer_velocity(double x, double y, double phi, Eigen::Vector2d* u) const;
   // Distance [m] from the walls within which layer_velocity is used (0 when

@@ -36,7 +36,12 @@ double RodOutcomeTracker::trapped_duration() const {
 }
 
 RodOutcome RodOutcomeTracker::update(const RodOutcomeSample& s) {
-  if (decided()) return outcome_;
+  observe(s);
+  return settle(s.time, -1);
+}
+
+void RodOutcomeTracker::observe(const RodOutcomeSample& s) {
+  if (decided()) return;
   if (started_ && s.time < last_time_) throw std::invalid_argument("rod outcome: sample times must not decrease");
   const double ratio = s.velocity_x / criteria_.mean_velocity;
   if (!started_) {
@@ -57,29 +62,38 @@ RodOutcome RodOutcomeTracker::update(const RodOutcomeSample& s) {
   }
   if (s.touching_below) last_below_ = s.time;
   if (s.touching_above) last_above_ = s.time;
+  last_centre_ = s.centre;
 
-  auto decide = [&](RodOutcome o) {
-    outcome_ = o;
-    decision_time_ = s.time;
-    decision_centre_ = s.centre;
-    return outcome_;
-  };
-  if (s.centre.x() > criteria_.pass_x)
-    return decide(touched() ? RodOutcome::passed_with_contact : RodOutcome::passed_without_contact);
-
+  if (s.centre.x() > criteria_.pass_x) {
+    decide(touched() ? RodOutcome::passed_with_contact : RodOutcome::passed_without_contact, s.time);
+    return;
+  }
   // Hysteresis: enter below stall_ratio, leave above release_ratio.
   if (averaged_ratio_ < criteria_.stall_ratio) stalled_ = true;
   else if (averaged_ratio_ > criteria_.release_ratio) stalled_ = false;
   auto recent = [&](double t) { return t >= 0.0 && s.time - t <= criteria_.averaging_time; };
   pinned_ = criteria_.require_both_sides ? recent(last_below_) && recent(last_above_)
                                          : recent(last_below_) || recent(last_above_);
-  if (stalled_ && pinned_) {
-    if (trapped_since_ < 0.0) trapped_since_ = s.time;
-    if (s.time - trapped_since_ >= criteria_.clog_time) return decide(RodOutcome::clogged);
+}
+
+RodOutcome RodOutcomeTracker::settle(double time, int holder) {
+  if (decided()) return outcome_;
+  if (stalled_ && (pinned_ || holder >= 0)) {
+    if (trapped_since_ < 0.0) trapped_since_ = time;
+    if (time - trapped_since_ >= criteria_.clog_time) {
+      held_by_ = pinned_ ? -1 : holder;
+      decide(RodOutcome::clogged, time);
+    }
   } else {
     trapped_since_ = -1.0;
   }
   return outcome_;
+}
+
+void RodOutcomeTracker::decide(RodOutcome outcome, double time) {
+  outcome_ = outcome;
+  decision_time_ = time;
+  decision_centre_ = last_centre_;
 }
 
 }  // namespace hsrod

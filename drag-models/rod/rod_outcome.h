@@ -20,6 +20,11 @@
 //       pore cylinders), each within the last `averaging_time` (so a contact
 //       that opens for a few steps does not reset the clock); with
 //       `require_both_sides = false` any wall contact pins.
+// - clogged, held by another rod (several rods, rod/rod_outcome_set.h): the
+//   rod is stalled and, instead of pinned, "held": in contact (within the
+//   last `averaging_time`) with a rod that is clogged or itself trapped
+//   (stalled and pinned, or held), without interruption for `clog_time`.
+//   The tracker is then told the holder (settle()); held_by() names it.
 // Once decided, the outcome does not change.
 #pragma once
 
@@ -60,7 +65,14 @@ class RodOutcomeTracker {
   explicit RodOutcomeTracker(const RodOutcomeCriteria& criteria);
 
   // Adds a sample (times must not decrease). Returns the outcome after it.
+  // Same as observe(sample) then settle(sample.time, -1): a rod alone.
   RodOutcome update(const RodOutcomeSample& sample);
+  // The two halves of update(), for several rods (rod/rod_outcome_set.h):
+  // observe() takes the sample (average, contacts, passage, stalled,
+  // pinned); settle() then runs the clog clock with `holder` >= 0 the ID of
+  // a trapped or clogged rod this one touches (-1: none).
+  void observe(const RodOutcomeSample& sample);
+  RodOutcome settle(double time, int holder);
 
   RodOutcome outcome() const { return outcome_; }
   bool decided() const { return outcome_ != RodOutcome::undecided; }
@@ -73,18 +85,25 @@ class RodOutcomeTracker {
   double averaged_velocity_ratio() const { return averaged_ratio_; }  // <v_x>/U [-]
   bool stalled() const { return stalled_; }
   bool pinned() const { return pinned_; }
+  // Stalled and (pinned or held) at the last settle(): the clog clock runs.
+  bool trapped() const { return trapped_since_ >= 0.0; }
+  // The rod holding this one when it was decided clogged (-1: the walls).
+  int held_by() const { return held_by_; }
   // How long the rod has been stalled and pinned without interruption [s].
   double trapped_duration() const;
 
  private:
+  void decide(RodOutcome outcome, double time);
   RodOutcomeCriteria criteria_;
   RodOutcome outcome_ = RodOutcome::undecided;
   bool started_ = false;
   double last_time_ = 0.0;
+  Eigen::Vector2d last_centre_ = Eigen::Vector2d::Zero();  // at the last sample [m]
   double averaged_ratio_ = 0.0;
   bool stalled_ = false, pinned_ = false;
   double last_below_ = -1.0, last_above_ = -1.0;  // last contact times on each side [s]
   double trapped_since_ = -1.0;                   // [s], -1 if not trapped
+  int held_by_ = -1;                              // holder when clogged (-1: walls)
   double first_contact_time_ = -1.0;
   Eigen::Vector2d first_contact_position_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d first_contact_centre_ = Eigen::Vector2d::Zero();

@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <stdexcept>
 #include <vector>
 
@@ -128,10 +129,11 @@ FixRodOutcome::FixRodOutcome(LAMMPS *instance, int narg, char **arg)
     error->all(FLERR, msg);
   }
   if (!atom->molecule_flag) error->all(FLERR, "fix rod/outcome: needs molecule IDs (atom_style ... molecular)");
+  rods_ = std::make_unique<hsrod::RodOutcomeSet>(criteria_);
 
   nevery = 1;
   vector_flag = 1;
-  size_vector = 10;
+  size_vector = 11;
   extvector = 0;
   global_freq = 1;
 }
@@ -141,16 +143,17 @@ int FixRodOutcome::setmask() { return END_OF_STEP; }
 void FixRodOutcome::init() {}
 
 void FixRodOutcome::setup(int) {
-  if (comm->me == 0) {
+  if (comm->me == 0 && !criteria_reported_) {  // once, not at every run of a chunked loop
     char msg[512];
     std::snprintf(msg, sizeof(msg),
                   "fix rod/outcome: passed when the centre is past x = %g m; clogged when <v_x>/U (averaged over "
-                  "%g s) < %g (released above %g) while touching %s for %g s\n",
+                  "%g s) < %g (released above %g) while touching %s, or resting against a trapped rod, for %g s\n",
                   criteria_.pass_x, criteria_.averaging_time, criteria_.stall_ratio, criteria_.release_ratio,
                   criteria_.require_both_sides ? "walls on both sides" : "a wall", criteria_.clog_time);
     if (screen) fputs(msg, screen);
     if (logfile) fputs(msg, logfile);
   }
+  criteria_reported_ = true;
   sample();
 }
 
@@ -189,16 +192,10 @@ void FixRodOutcome::sample() {
   MPI_Allreduce(local.data(), total.data(), static_cast<int>(local.size()), MPI_DOUBLE, MPI_SUM, world);
 
   const double time = update->atime + (update->ntimestep - update->atimestep) * update->dt;
-  bool all = true;
-  int rods = 0;
+  std::map<int, hsrod::RodOutcomeSample> samples;
   for (int mol = 0; mol <= max_mol; mol++) {
     const double *d = &total[kFields * mol];
     if (d[3] <= 0.0) continue;
-    rods++;
-    auto it = trackers_.find(mol);
-    if (it == trackers_.end()) it = trackers_.emplace(mol, hsrod::RodOutcomeTracker(criteria_)).first;
-    hsrod::RodOutcomeTracker &tracker = it->second;
-    const bool was_decided = tracker.decided();
     hsrod::RodOutcomeSample s;
     s.time = time;
     s.centre = Eigen::Vector2d(d[0] / d[3], d[1] / d[3]);
@@ -209,24 +206,65 @@ void FixRodOutcome::sample() {
     // side, else on the upper side.
     if (d[4] > 0.0) s.contact_position = Eigen::Vector2d(d[6] / d[4], d[7] / d[4]);
     else if (d[5] > 0.0) s.contact_position = Eigen::Vector2d(d[8] / d[5], d[9] / d[5]);
-    tracker.update(s);
-    if (tracker.decided() && !was_decided && comm->me == 0) {
-      char msg[512];
-      const int n = std::snprintf(msg, sizeof(msg), "fix rod/outcome: rod %d %s at t = %g s, centre (%g, %g) m", mol,
-                                  hsrod::rod_outcome_name(tracker.outcome()), tracker.decision_time(),
-                                  tracker.decision_centre().x(), tracker.decision_centre().y());
-      if (tracker.touched())
-        std::snprintf(msg + n, sizeof(msg) - n, "; first wall contact at t = %g s, sphere centre (%g, %g) m\n",
-                      tracker.first_contact_time(), tracker.first_contact_position().x(),
-                      tracker.first_contact_position().y());
-      else
-        std::snprintf(msg + n, sizeof(msg) - n, "; no wall contact\n");
-      if (screen) fputs(msg, screen);
-      if (logfile) fputs(msg, logfile);
-    }
+    samples.emplace(mol, s);
+  }
+  // Rod-rod contacts only matter with several rods.
+  rods_->update(time, samples, samples.size() > 1 ? touching_rods() : std::vector<std::pair<int, int>>{});
+  bool all = true;
+  for (const auto &entry : samples) {
+    const hsrod::RodOutcomeTracker &tracker = rods_->trackers().at(entry.first);
+    if (tracker.decided() && !reported_.count(entry.first)) report_decision(entry.first, tracker);
     all = all && tracker.decided();
   }
+  const int rods = static_cast<int>(samples.size());
   all_decided_ = rods > 0 && all;
+}
+
+// Every group sphere's molecule, centre and radius from all procs; the
+// overlapping pairs of rods (drag-models/rod/rod_outcome_set.h).
+std::vector<std::pair<int, int>> FixRodOutcome::touching_rods() {
+  constexpr int kPerSphere = 5;  // molecule, x, y, z, radius
+  std::vector<double> mine;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    mine.insert(mine.end(), {static_cast<double>(atom->molecule[i]), atom->x[i][0], atom->x[i][1], atom->x[i][2],
+                             atom->radius[i]});
+  }
+  int count = static_cast<int>(mine.size());
+  std::vector<int> counts(comm->nprocs), offsets(comm->nprocs, 0);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < comm->nprocs; p++) offsets[p] = offsets[p - 1] + counts[p - 1];
+  std::vector<double> all(offsets.back() + counts.back());
+  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, world);
+  const std::size_t n = all.size() / kPerSphere;
+  std::vector<Eigen::Vector3d> centres(n);
+  std::vector<double> radii(n);
+  std::vector<int> rod_ids(n);
+  for (std::size_t k = 0; k < n; k++) {
+    const double *d = &all[kPerSphere * k];
+    rod_ids[k] = static_cast<int>(d[0]);
+    centres[k] = Eigen::Vector3d(d[1], d[2], d[3]);
+    radii[k] = d[4];
+  }
+  return hsrod::touching_rod_pairs(centres, radii, rod_ids);
+}
+
+void FixRodOutcome::report_decision(int mol, const hsrod::RodOutcomeTracker &tracker) {
+  reported_.insert(mol);
+  if (comm->me != 0) return;
+  char msg[512];
+  int n = std::snprintf(msg, sizeof(msg), "fix rod/outcome: rod %d %s", mol, hsrod::rod_outcome_name(tracker.outcome()));
+  if (tracker.held_by() >= 0) n += std::snprintf(msg + n, sizeof(msg) - n, " (held by rod %d)", tracker.held_by());
+  n += std::snprintf(msg + n, sizeof(msg) - n, " at t = %g s, centre (%g, %g) m", tracker.decision_time(),
+                     tracker.decision_centre().x(), tracker.decision_centre().y());
+  if (tracker.touched())
+    std::snprintf(msg + n, sizeof(msg) - n, "; first wall contact at t = %g s, sphere centre (%g, %g) m\n",
+                  tracker.first_contact_time(), tracker.first_contact_position().x(),
+                  tracker.first_contact_position().y());
+  else
+    std::snprintf(msg + n, sizeof(msg) - n, "; no wall contact\n");
+  if (screen) fputs(msg, screen);
+  if (logfile) fputs(msg, logfile);
 }
 
 double FixRodOutcome::compute_vector(int n) {
@@ -235,14 +273,17 @@ double FixRodOutcome::compute_vector(int n) {
   // largest, once all are decided), [3] first wall contact time [s] (-1:
   // none), [4-5] its position [m], [6] <v_x>/U of the first rod, [7-9] rods
   // clogged / passed with contact / passed without, [10] how long the first
-  // rod has been stalled and pinned [s].
-  const hsrod::RodOutcomeTracker *first = trackers_.empty() ? nullptr : &trackers_.begin()->second;
+  // rod has been trapped (stalled and pinned or held) [s], [11] rods clogged
+  // held by another rod (of [7]).
+  const auto &trackers = rods_->trackers();
+  const hsrod::RodOutcomeTracker *first = trackers.empty() ? nullptr : &trackers.begin()->second;
   const hsrod::RodOutcomeTracker *earliest = nullptr;
-  int worst = 0, counts[4] = {0, 0, 0, 0};
-  for (const auto &entry : trackers_) {
+  int worst = 0, counts[4] = {0, 0, 0, 0}, held = 0;
+  for (const auto &entry : trackers) {
     const hsrod::RodOutcomeTracker &t = entry.second;
     worst = std::max(worst, static_cast<int>(t.outcome()));
     counts[static_cast<int>(t.outcome())]++;
+    if (t.outcome() == hsrod::RodOutcome::clogged && t.held_by() >= 0) held++;
     if (t.touched() && (!earliest || t.first_contact_time() < earliest->first_contact_time())) earliest = &t;
   }
   switch (n) {
@@ -255,6 +296,7 @@ double FixRodOutcome::compute_vector(int n) {
     case 6: return counts[3];
     case 7: return counts[2];
     case 8: return counts[1];
-    default: return first ? first->trapped_duration() : 0.0;
+    case 9: return first ? first->trapped_duration() : 0.0;
+    default: return held;
   }
 }

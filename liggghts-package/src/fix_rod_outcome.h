@@ -3,7 +3,9 @@
    without wall contact, passed with contact, or clogged (criteria and
    hysteresis in drag-models/rod/rod_outcome.h), records the time and
    position of first wall contact, and tells the script when every rod is
-   decided so that a chunked run can stop.
+   decided so that a chunked run can stop. Several rods: a rod resting
+   against a trapped rod is clogged too, "held by rod k"
+   (drag-models/rod/rod_outcome_set.h).
    Doc: doc/fix_rod_outcome.txt
 ------------------------------------------------------------------------- */
 
@@ -18,9 +20,10 @@ FixStyle(rod/outcome,FixRodOutcome)
 
 #include "fix.h"
 
-#include "rod/rod_outcome.h"
+#include "rod/rod_outcome_set.h"
 
-#include <map>
+#include <memory>
+#include <set>
 
 namespace LAMMPS_NS {
 
@@ -38,8 +41,13 @@ class FixRodOutcome : public Fix {
   class FixHeleShawDrag *drag_;
   hsrod::RodOutcomeCriteria criteria_;
   bool pass_x_given_, averaging_given_, clog_given_;
-  std::map<int, hsrod::RodOutcomeTracker> trackers_;  // per molecule ID, identical on every proc
+  std::unique_ptr<hsrod::RodOutcomeSet> rods_;  // per molecule ID, identical on every proc
+  std::set<int> reported_;                      // rods whose decision was printed
+  // Pairs of rods (molecule IDs) whose spheres overlap now, from all procs.
+  std::vector<std::pair<int, int>> touching_rods();
+  void report_decision(int mol, const hsrod::RodOutcomeTracker &tracker);
   bool all_decided_;
+  bool criteria_reported_ = false;
 };
 
 }  // namespace LAMMPS_NS

@@ -1,10 +1,14 @@
 // Outcome classes (rod/rod_outcome.h) on synthetic trajectories whose
 // outcome and decision time follow from the stated criteria by hand.
 #include "rod/rod_outcome.h"
+#include "rod/rod_outcome_set.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <vector>
 #include <stdexcept>
 
 using namespace hsrod;
@@ -177,4 +181,104 @@ TEST(RodOutcome, BadCriteriaNameTheField) {
   c = criteria();
   c.clog_time = -1.0;
   EXPECT_THROW(RodOutcomeTracker{c}, std::invalid_argument);
+}
+
+// Several rods (rod/rod_outcome_set.h): a rod resting against a rod trapped
+// at the cylinders, itself touching no wall.
+namespace {
+
+std::map<int, RodOutcomeSample> two_rods(double t, bool front_pinned, double behind_vx) {
+  return {{1, sample(t, 285e-6, 0.0, front_pinned, front_pinned)}, {2, sample(t, 279e-6, behind_vx, false, false)}};
+}
+
+}  // namespace
+
+TEST(RodOutcomeSet, RodRestingOnATrappedRodIsClassifiedCloggedHeldByIt) {
+  RodOutcomeSet rods(criteria());
+  int k = 0;
+  while (!(rods.trackers().count(2) && rods.trackers().at(2).decided()) && k < 100000) {
+    ++k;
+    rods.update(k * dt, two_rods(k * dt, true, 0.0), {{1, 2}});
+  }
+  const RodOutcomeTracker& front = rods.trackers().at(1);
+  const RodOutcomeTracker& behind = rods.trackers().at(2);
+  ASSERT_EQ(front.outcome(), RodOutcome::clogged);
+  EXPECT_EQ(front.held_by(), -1);  // the walls
+  ASSERT_EQ(behind.outcome(), RodOutcome::clogged);
+  EXPECT_EQ(behind.held_by(), 1);
+  EXPECT_FALSE(behind.touched());  // never touched a wall
+  // Both stalled from the first sample (v = 0), trapped from it: clogged
+  // after the clog time, in the same sample.
+  EXPECT_NEAR(front.decision_time(), hold + dt, 2 * dt);
+  EXPECT_NEAR(behind.decision_time(), front.decision_time(), 1e-12);
+}
+
+TEST(RodOutcomeSet, RodAloneBehindTheTrappedOneIsNotHeld) {
+  // The same rods without contact between them: the one behind stays en route.
+  RodOutcomeSet rods(criteria());
+  for (int k = 1; k <= 10000; ++k) rods.update(k * dt, two_rods(k * dt, true, 0.0), {});
+  EXPECT_EQ(rods.trackers().at(1).outcome(), RodOutcome::clogged);
+  EXPECT_FALSE(rods.trackers().at(2).decided());
+  EXPECT_TRUE(rods.trackers().at(2).stalled());
+}
+
+TEST(RodOutcomeSet, RodTouchingARodAwayFromTheWallsIsNotHeld) {
+  // The front rod is stalled but touches no wall (e.g. two rods stopped
+  // together by an external force): neither is an anchor, neither clogs.
+  RodOutcomeSet rods(criteria());
+  for (int k = 1; k <= 10000; ++k) rods.update(k * dt, two_rods(k * dt, false, 0.0), {{1, 2}});
+  EXPECT_FALSE(rods.trackers().at(1).decided());
+  EXPECT_FALSE(rods.trackers().at(2).decided());
+}
+
+TEST(RodOutcomeSet, ColumnOfThreeRodsClogsThroughTheMiddleOne) {
+  // Rod 3 touches only rod 2, which touches only rod 1 at the cylinders;
+  // rod 2's contact with rod 1 opens on every other sample (within tau).
+  RodOutcomeSet rods(criteria());
+  for (int k = 1; k <= 3000; ++k) {
+    auto samples = two_rods(k * dt, true, 0.0);
+    samples[3] = sample(k * dt, 273e-6, 0.0, false, false);
+    std::vector<std::pair<int, int>> contacts = {{3, 2}};
+    if (k % 2) contacts.push_back({2, 1});
+    rods.update(k * dt, samples, contacts);
+  }
+  EXPECT_EQ(rods.trackers().at(2).outcome(), RodOutcome::clogged);
+  EXPECT_EQ(rods.trackers().at(2).held_by(), 1);
+  EXPECT_EQ(rods.trackers().at(3).outcome(), RodOutcome::clogged);
+  EXPECT_EQ(rods.trackers().at(3).held_by(), 2);
+}
+
+TEST(RodOutcomeSet, HeldRodThatStartsMovingAgainIsReleased) {
+  // Rod 2 rests on rod 1 for 3 ms (< clog time), then is carried away at U
+  // (it slides off): its average rises above release_ratio, it is no longer
+  // held, and its clock restarts; it never clogs.
+  RodOutcomeSet rods(criteria());
+  double x = 279e-6;
+  for (int k = 1; k <= 10000; ++k) {
+    const double t = k * dt;
+    const bool resting = t < 3e-3;
+    auto samples = two_rods(t, true, resting ? 0.0 : U);
+    x += (resting ? 0.0 : U) * dt;
+    samples[2].centre.x() = std::min(x, 380e-6);
+    rods.update(t, samples, resting ? std::vector<std::pair<int, int>>{{1, 2}} : std::vector<std::pair<int, int>>{});
+  }
+  EXPECT_EQ(rods.trackers().at(1).outcome(), RodOutcome::clogged);
+  EXPECT_FALSE(rods.trackers().at(2).decided());
+  EXPECT_FALSE(rods.trackers().at(2).stalled());
+}
+
+TEST(RodOutcomeSet, TouchingRodPairsAreThoseWithOverlappingSpheres) {
+  // Rods 1 and 2 overlap by 0.1 um at one sphere pair; rod 3 is 0.1 um
+  // clear of rod 2 (sphere radius 1.5 um).
+  const double r = 1.5e-6;
+  std::vector<Eigen::Vector3d> x;
+  std::vector<int> rod;
+  for (int k = 0; k < 3; ++k) {
+    x.emplace_back(0.0, 3e-6 * k, 0.0), rod.push_back(1);
+    x.emplace_back(2.9e-6, 3e-6 * k + 6e-6, 0.0), rod.push_back(2);
+    x.emplace_back(2.9e-6 + 3.1e-6, 3e-6 * k + 6e-6, 0.0), rod.push_back(3);
+  }
+  const auto pairs = touching_rod_pairs(x, std::vector<double>(x.size(), r), rod);
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_EQ(pairs[0], std::make_pair(1, 2));
 }

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <fcntl.h>
@@ -174,6 +175,14 @@ int main(int argc, char **argv) {
     for (const auto &[name, spec] : options.variables) swept.push_back({name, parse_values(name, spec)});
     grid = std::make_unique<CaseGrid>(swept);
     measures = parse_measures(options.measures);
+    // One CSV column per name: a measure must not shadow another column.
+    std::set<std::string> columns = {"case", "status", "error", "wall_s", "cpu_s", "rank"};
+    for (const SweptVariable &v : swept)
+      if (!columns.insert(v.name).second) throw std::runtime_error("--var " + v.name + " is given twice");
+    for (const Measure &m : measures)
+      if (!columns.insert(m.name).second)
+        throw std::runtime_error("--measure " + m.name + ": a column of that name exists (a swept variable, another "
+                                 "measure, or one of case, status, error, wall_s, cpu_s, rank); rename the measure");
     if (rank == 0 && !options.list) prepared = prepare(options, *grid, measures, results);
   } catch (const std::exception &e) {
     status = 1;

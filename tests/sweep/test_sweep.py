@@ -16,6 +16,10 @@ Usage: test_sweep.py <test> <hsrod-sweep> <hsrod> <mpirun> <work-dir>
            fix rod/outcome read as a measure gives the paper's classes,
            passage without contact at L_rod/d_pore = 1 and clogging at 2
            (Fig. 10a), with the first contact only in the clogged case.
+  rods     the number of rods swept (examples/several-rods/in.several_rods,
+           nrods 1 and 2, rods of 1.1 d_pore at level 2): each case has
+           11 x nrods spheres; one rod alone is trapped at the cylinders,
+           a second one behind it is clogged too, held by the first.
 """
 import csv
 import os
@@ -204,6 +208,24 @@ elif test == "regime":
     # Files other tests or a user leave there do not count; only this sweep's.
     written = [f for f in set(os.listdir(clogging)) - before if f.startswith("clog_") or f.startswith("dump_")]
     check(not written, f"the swept cases wrote no CSV or VTK files into the example folder: {written}")
+elif test == "rods":
+    several = os.path.join(HERE, "..", "..", "examples", "several-rods")
+    cmd = [sweep, "--in", os.path.join(several, "in.several_rods"), "--workdir", several,
+           "--output", os.path.join(work, "rods.csv"), "--fresh",
+           "--var", "model", "local", "--var", "spheres", "11", "--var", "nrods", "1,2",
+           "--measure", "atoms=atoms", "--measure", "clogged=f_out[7]", "--measure", "held=f_out[11]",
+           "--measure", "decided=f_out[1]"]
+    done = subprocess.run(cmd, cwd=work, capture_output=True, text=True, timeout=300)
+    print(done.stdout[-1500:], done.stderr[-1500:])
+    check(done.returncode == 0, f"hsrod-sweep on in.several_rods exits with 0 (got {done.returncode})")
+    table = {r["nrods"]: r for r in rows("rods.csv")}
+    one, two = table.get("1", {}), table.get("2", {})
+    check(one.get("status") == "ok" and one.get("atoms") == "11" and one.get("clogged") == "1"
+          and one.get("held") == "0" and one.get("decided") == "1",
+          f"one rod of 1.1 d_pore: 11 spheres, trapped at the cylinders: {one}")
+    check(two.get("status") == "ok" and two.get("atoms") == "22" and two.get("clogged") == "2"
+          and two.get("held") == "1" and two.get("decided") == "1",
+          f"two rods: 22 spheres, both clogged, the second held by the first: {two}")
 else:
     sys.exit(f"unknown test {test}")
 

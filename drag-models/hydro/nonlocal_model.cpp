@@ -84,12 +84,16 @@ void NonlocalRodModel::evaluate_rods(const std::vector<RodGeometry>& rods, const
   evaluate(all, flow, out, state);
 }
 
-double NonlocalRodModel::interaction_reach() const {
-  const double h = parameters_.gap_height;
-  const double screening = h / std::sqrt(12.0);
-  const double dipole = std::sqrt(kMidplaneFactor * obstruction_friction_ * h /
-                                  (24.0 * kPi * parameters_.viscosity * kInteractionTolerance));
+double depth_averaged_interaction_reach(double gap_height, double viscosity, double obstruction_friction,
+                                        double tolerance) {
+  const double screening = gap_height / std::sqrt(12.0);
+  const double dipole = std::sqrt(kMidplaneFactor * obstruction_friction * gap_height / (24.0 * kPi * viscosity * tolerance));
   return std::max(10.0 * screening, dipole);
+}
+
+double NonlocalRodModel::interaction_reach() const {
+  return depth_averaged_interaction_reach(parameters_.gap_height, parameters_.viscosity, obstruction_friction_,
+                                          kInteractionTolerance);
 }
 
 }  // namespace hsrod

@@ -28,6 +28,14 @@
 
 namespace hsrod {
 
+// Sphere-centre distance [m] beyond which two spheres' coupling through the
+// depth-averaged Brinkman flow, c zeta_o |G|, is below `tolerance` of a
+// sphere's own obstruction (NonlocalRodModel::interaction_reach; level 4's
+// window carries the same flow): gap height H [m], viscosity mu [Pa s],
+// obstruction friction zeta_o [N s/m].
+double depth_averaged_interaction_reach(double gap_height, double viscosity, double obstruction_friction,
+                                        double tolerance);
+
 class NonlocalRodModel : public LocalDragBase {
  public:
   NonlocalRodModel(const HydrodynamicParameters& parameters, const ConfinementTable& table);

@@ -1,5 +1,6 @@
 #include "hydro/twoway_window_model.h"
 #include "common/math_constants.h"
+#include "hydro/nonlocal_model.h"
 
 #include <Eigen/Cholesky>
 
@@ -490,6 +491,41 @@ void TwoWayWindowModel::evaluate(const RodGeometry& rod, const BackgroundFlow& f
   auto* own = dynamic_cast<TwoWayWindowState*>(state);
   if (!own) throw std::invalid_argument("twoway: the state given is not a level-4 state (make_state())");
   evaluate_with(rod, flow, out, *own);
+}
+
+int TwoWayWindowModel::joint_key(const std::vector<RodGeometry>& rods) {
+  int smallest = rods.empty() ? 0 : rods.front().id;
+  for (const RodGeometry& rod : rods) smallest = std::min(smallest, rod.id);
+  return -(1 + smallest);
+}
+
+void TwoWayWindowModel::evaluate_rods(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, RodDrag& out,
+                                      ModelState* state) const {
+  if (rods.size() == 1) {
+    evaluate(rods.front(), flow, out, state);
+    return;
+  }
+  RodGeometry all;
+  all.sphere_diameter = rods.empty() ? 0.0 : rods.front().sphere_diameter;
+  all.id = joint_key(rods);
+  std::vector<int> members;
+  for (const RodGeometry& rod : rods) {
+    all.positions.insert(all.positions.end(), rod.positions.begin(), rod.positions.end());
+    members.push_back(rod.id);
+  }
+  if (auto* own = dynamic_cast<TwoWayWindowState*>(state)) {
+    // A window kept under this key for another set of rods is dropped (a
+    // restored one, members unknown, is kept: it was saved for these rods).
+    const auto it = own->rods.find(all.id);
+    if (it != own->rods.end() && !it->second.members.empty() && it->second.members != members) own->rods.erase(it);
+    own->rods[all.id].members = members;
+  }
+  evaluate(all, flow, out, state);  // virtual: the registered model adds its near field
+}
+
+double TwoWayWindowModel::interaction_reach() const {
+  return depth_averaged_interaction_reach(parameters_.gap_height, parameters_.viscosity, obstruction_,
+                                          NonlocalRodModel::kInteractionTolerance);
 }
 
 void TwoWayWindowModel::evaluate_with(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out,

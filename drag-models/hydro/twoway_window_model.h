@@ -87,6 +87,8 @@ struct TwoWayWindowState : ModelState {
     std::vector<Eigen::Vector3d> solved_positions;  // at the last update [m]
     Eigen::MatrixXd obstruction;                    // R_o, in-plane (2n x 2n) [N s/m]
     int evaluations_since_update = 0;
+    std::vector<int> members;  // rods evaluated together in this window (by RodGeometry::id; empty: one rod,
+                               // or restored from a restart), evaluate_rods
   };
   std::map<int, Rod> rods;  // by RodGeometry::id
   std::map<std::pair<int, int>, std::shared_ptr<const BrinkmanWindow>> free_windows;  // by (nx, ny)
@@ -116,6 +118,25 @@ class TwoWayWindowModel : public LocalDragBase {
   using HydrodynamicModel::evaluate;
   // `state`: a TwoWayWindowState (null: a fresh one for this call).
   void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState* state) const override;
+  // Several rods (issue 11): one window around all of them, its fine zone
+  // spanning every rod, so that each rod's obstruction disturbs the flow
+  // the others see (the mobility M between all their footprints, walls
+  // included), exactly as the spheres of one rod interact; the near field
+  // (twoway_near_field.h) acts between spheres of different rods too. As at
+  // level 3, the rods are one rod without bonds between them. The joint
+  // window is kept in the state under key joint_key(rods) and re-solved when
+  // the set of rods changes.
+  void evaluate_rods(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, RodDrag& out,
+                     ModelState* state) const override;
+  // State key of rods evaluated together: -(1 + smallest id), negative so
+  // that it never names a rod alone (ids >= 0).
+  static int joint_key(const std::vector<RodGeometry>& rods);
+  // Sphere-centre distance beyond which rods are evaluated apart [m]: the
+  // window's flow is level 3's depth-averaged Brinkman flow, whose far field
+  // is the Hele-Shaw dipole, so the same reach as level 3
+  // (NonlocalRodModel::interaction_reach: coupling below 1e-3 of a sphere's
+  // own obstruction).
+  double interaction_reach() const override;
 
   double film_friction() const { return film_friction_; }  // zeta_f [N s/m]
   double free_self_mobility() const { return free_self_mobility_; }  // m_free [m/(N s)]

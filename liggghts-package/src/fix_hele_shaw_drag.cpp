@@ -1,6 +1,7 @@
 /* ----------------------------------------------------------------------
    hsrod - fix hele_shaw/drag (see fix_hele_shaw_drag.h; keywords in
-   fix_hele_shaw_drag_keywords.cpp, checks of the scene and the spheres'
+   fix_hele_shaw_drag_keywords.cpp, the explicit path in
+   fix_hele_shaw_drag_explicit.cpp, checks of the scene and the spheres'
    placement in fix_hele_shaw_drag_checks.cpp)
 ------------------------------------------------------------------------- */
 
@@ -206,37 +207,6 @@ void FixHeleShawDrag::check_explicit_limit() {
 void FixHeleShawDrag::setup(int vflag) {
   check_explicit_limit();
   if (!applied_by_integrator_) post_force(vflag);
-}
-
-// F = driving - R v and T = driving_torque - r omega on every sphere.
-void FixHeleShawDrag::post_force(int) {
-  if (applied_by_integrator_) return;
-  force_flag_ = 0;
-  RodGather gather(lmp);
-  gather.gather(groupbit, nullptr);
-  double total[3] = {0, 0, 0};
-  for (const auto &rod : gather.rods) {
-    const hsrod::RodGeometry g = rod_geometry(*hydro_, rod.first, rod.second);
-    const int n = g.size();
-    Eigen::VectorXd v(3 * n);
-    for (int k = 0; k < n; k++) v.segment<3>(3 * k) = rod.second[k].velocity;
-    hsrod::RodDrag drag;
-    hydro_->loads(g, drag);
-    const Eigen::VectorXd forces = drag.forces(v);
-    for (int k = 0; k < n; k++) {
-      const int i = atom->map(rod.second[k].tag);
-      if (i < 0 || i >= atom->nlocal) continue;
-      const Eigen::Vector3d torque = drag.driving_torque[k] - drag.rotational_resistance[k] * rod.second[k].angular_velocity;
-      const Eigen::Vector3d sphere_force = forces.segment<3>(3 * k);  // [N]
-      for (int a = 0; a < 3; a++) {
-        atom->f[i][a] += sphere_force[a];
-        atom->torque[i][a] += torque[a];
-        total[a] += sphere_force[a];
-      }
-      store_loads(i, drag.driving_force[k], sphere_force, torque);
-    }
-  }
-  MPI_Allreduce(total, total_force_, 3, MPI_DOUBLE, MPI_SUM, world);
 }
 
 void FixHeleShawDrag::store_loads(int i, const Eigen::Vector3d &driving, const Eigen::Vector3d &total,

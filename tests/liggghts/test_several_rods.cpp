@@ -6,6 +6,9 @@
 // rods_overlap_no_pair).
 #include "liggghts_session.h"
 
+#include "fix_hele_shaw_drag.h"
+#include "hydro/rod_hydrodynamics.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -98,4 +101,70 @@ TEST(SeveralRods, RodsFarApartMoveBitForBitAsEachAlone) {
   double centre_x = 0.0;
   for (int i = 0; i < 10; i++) centre_x += both[i].x() / 10;
   EXPECT_GT(centre_x, 155e-6) << "rod 1 was carried downstream";
+}
+
+namespace {
+// Two 10-sphere rods across the flow (along y), the second `gap_x` behind
+// the first, at rest in a straight channel of the pore scene's size, with
+// fix hele_shaw/drag applied explicitly (no fix rod/implicit): `run 0`
+// leaves each sphere's force = its drag at rest, the driving load.
+std::vector<std::string> rods_at_rest(const std::string &model, bool second, double gap_x) {
+  std::vector<std::string> lines = {
+      "units si", "atom_style hybrid granular molecular", "atom_modify map array sort 0 0", "boundary f f f",
+      "newton off", "communicate single cutoff 1e-5 vel yes", "region box block 0 600e-6 0 200e-6 0 20e-6 units box",
+      "create_box 1 box", "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 300e-6 100e-6 10e-6 angle 0"};
+  if (second)
+    lines.push_back("create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre " + hsrod_test::num(300e-6 - gap_x) +
+                    " 100e-6 10e-6 angle 0");
+  for (const std::string &l : std::vector<std::string>{"fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3",
+                              "fix drag all hele_shaw/drag mean_velocity 0.03 model " + model, "timestep 1e-10",
+                              "run 0"})
+    lines.push_back(l);
+  return lines;
+}
+}  // namespace
+
+TEST(SeveralRods, ExplicitDragEvaluatesCoupledRodsTogether) {
+  // Levels 3 and 4 couple rods hydrodynamically; the explicit path (fix
+  // hele_shaw/drag alone) evaluated each rod by itself, so the leading
+  // rod's load was that of the rod alone. Now the rods within the model's
+  // interaction reach are evaluated together: each sphere's force is the
+  // joint load of drag-models (RodHydrodynamics::loads over both rods), and
+  // two rods 2 d apart shield each other (level 3 in a uniform stream:
+  // 0.72 of the lone load, tests/drag-models/hydro/test_rigid_rod_transport.cpp).
+  for (const std::string model : {"nonlocal", "twoway"}) {
+    double alone = 0.0;
+    {
+      hsrod_test::LiggghtsSession s;
+      s.commands(rods_at_rest(model, false, 0.0));
+      for (const auto &f : s.gather("f")) alone += f.x();
+    }
+    hsrod_test::LiggghtsSession s;
+    s.commands(rods_at_rest(model, true, 6e-6));
+    const auto f = s.gather("f"), x = s.gather("x");
+    ASSERT_EQ(f.size(), 20u);
+    double leading = 0.0, trailing = 0.0;
+    for (int i = 0; i < 10; i++) {
+      leading += f[i].x();
+      trailing += f[10 + i].x();
+    }
+    // The same load from drag-models directly, over both rods together.
+    auto *drag = dynamic_cast<LAMMPS_NS::FixHeleShawDrag *>(s.fix("drag"));
+    ASSERT_NE(drag, nullptr);
+    std::vector<hsrod::RodGeometry> rods(2);
+    for (int r = 0; r < 2; r++) {
+      rods[r].id = r + 1;
+      rods[r].sphere_diameter = 3e-6;
+      rods[r].positions.assign(x.begin() + 10 * r, x.begin() + 10 * (r + 1));
+    }
+    hsrod::RodDrag joint;
+    drag->hydrodynamics().loads(rods, joint);
+    for (int i = 0; i < 20; i++)
+      EXPECT_LT((f[i] - joint.driving_force[i]).norm(), 1e-9 * joint.driving_force[i].norm()) << model << " sphere " << i;
+    std::printf("%s, explicit drag at rest, rods 2 d apart: load / rod alone: leading %.4f, trailing %.4f\n",
+                model.c_str(), leading / alone, trailing / alone);
+    EXPECT_LT(leading / alone, 0.85) << model;
+    EXPECT_LT(trailing / alone, 0.85) << model;
+    EXPECT_GT(leading / alone, 0.6) << model;
+  }
 }

@@ -11,10 +11,12 @@
 
 namespace hsrod_test {
 
-// Uniform gap-averaged stream of 1 m/s along x.
+// Uniform gap-averaged stream of 1 m/s along x (gap height H [m], 1 m unless
+// given: level 4 needs the model's H; the planform, 1 m wide, has no walls
+// any window reaches).
 class UniformStream : public hsrod::BackgroundFlow {
  public:
-  UniformStream() : geometry_(1.0, 1.0, 1.0, -0.5, -0.5) {}
+  explicit UniformStream(double gap = 1.0) : geometry_(1.0, 1.0, gap, -0.5, -0.5) {}
   Eigen::Vector2d velocity(double, double) const override { return {1.0, 0.0}; }
   Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
   double pressure(double, double) const override { return 0.0; }

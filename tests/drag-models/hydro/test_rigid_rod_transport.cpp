@@ -271,3 +271,140 @@ TEST(RigidRodTransport, Level3TwoRodsAcrossTheFlowShieldEachOther) {
   }
   EXPECT_LT(previous, 1.0);
 }
+
+namespace {
+// Sums over the spheres of `first`..`first + count - 1` of a load: the
+// friction of a rigid translation along axis a (sum of the a-a entries of
+// every block of R) [N s/m] and the held-in-flow load along a [N].
+double row_friction(const RodDrag& d, int first, int count, int a) {
+  double sum = 0.0;
+  for (int i = first; i < first + count; ++i)
+    for (int k = first; k < first + count; ++k)
+      sum += d.coupled() ? d.coupled_resistance(3 * i + a, 3 * k + a) : (i == k ? d.resistance[i](a, a) : 0.0);
+  return sum;
+}
+double row_load(const RodDrag& d, int first, int count, int a) {
+  double sum = 0.0;
+  for (int i = first; i < first + count; ++i) sum += d.driving_force[i][a];
+  return sum;
+}
+}  // namespace
+
+TEST(RigidRodTransport, Level4CouplesRodsAndTwoLoneSpheresAreOneUnbondedPair) {
+  // Level 4 (issue 11): rods evaluated together share one window, so two
+  // rods of one sphere each are, term by term, one two-sphere rod (the
+  // window does not see bonds either); its interaction reach is level 3's
+  // (the same depth-averaged far field).
+  const double beta = 0.15;
+  const hsrod_test::UniformStream stream(kD / beta);
+  const auto m = model("twoway", beta);
+  const RodGeometry two = straight_rod(2, kD, kPi / 2);
+  RodGeometry a, b;
+  a.sphere_diameter = b.sphere_diameter = kD;
+  a.positions = {two.positions[0]};
+  b.positions = {two.positions[1]};
+  a.id = 1;
+  b.id = 2;
+  RodDrag two_rods, pair;
+  m->evaluate_rods({a, b}, stream, two_rods, m->make_state().get());
+  m->evaluate(two, stream, pair);
+  ASSERT_TRUE(two_rods.coupled());
+  EXPECT_LT((two_rods.coupled_resistance - pair.coupled_resistance).norm(), 1e-12 * pair.coupled_resistance.norm());
+  for (int i = 0; i < 2; ++i) EXPECT_LT((two_rods.driving_force[i] - pair.driving_force[i]).norm(), 1e-12 * pair.driving_force[i].norm());
+  EXPECT_DOUBLE_EQ(m->interaction_reach(), model("nonlocal", beta)->interaction_reach());
+}
+
+TEST(RigidRodTransport, Level4PairOfLoneSpheresAgainstTheResolvedPair) {
+  // Two rods of one sphere each, side by side across the flow or one behind
+  // the other along it, evaluated together by level 4 (one window), against
+  // the resolved rigid pairs of the campaign (resolved_campaign_series.csv:
+  // n = 2 at centre spacing 1 d, beta 0.15 and 0.3, and 2 d, beta 0.15):
+  // the pair's friction (R, rigid translation) and held-in-flow load (D),
+  // along and across, within the 10 % that levels 3-4 claim for rows
+  // (tests/calibration/test_near_field_levels.cpp), and closer to the
+  // resolved pair than the two spheres evaluated apart (what level 4 did
+  // before: each rod in its own window, the other one unseen). The 1 d
+  // pairs are rows the near field was fitted to (role "fit"); the 2 d pair
+  // (role "pair") is in no fit. Measured: within 0.7 % at 1 d; +2.7 % (R)
+  // and +2.9 % (D) along, -0.9 / -0.6 % across at 2 d; apart: +25..+48 %.
+  const auto rows = hsrod::calib::read_resolved_series(std::string(HSROD_TEST_DATA_DIR) + "/../../../calibration/data/resolved_campaign_series.csv");
+  int compared = 0;
+  for (const auto& s : rows) {
+    if (s.n != 2 || s.beta > 0.3 + 1e-9) continue;
+    const double beta = s.beta, scale = 3 * kPi * kMu * kD;  // R = friction / (3 pi mu d), D = load / (3 pi mu d U)
+    const hsrod_test::UniformStream stream(kD / beta);      // U_mean = 1 m/s
+    const auto m = model("twoway", beta);
+    for (const double theta : {0.0, kPi / 2}) {
+      const bool across = theta == kPi / 2;  // the pair's axis across the flow
+      RodGeometry a, b;
+      a.sphere_diameter = b.sphere_diameter = kD;
+      a.id = 1;
+      b.id = 2;
+      const Eigen::Vector3d half = 0.5 * s.spacing * kD * Eigen::Vector3d(std::cos(theta), std::sin(theta), 0.0);
+      a.positions = {half};
+      b.positions = {-half};
+      RodDrag together, first, second;
+      m->evaluate_rods({a, b}, stream, together, m->make_state().get());
+      m->evaluate(a, stream, first);
+      m->evaluate(b, stream, second);
+      // Flow along x: "along" is the pair's axis along the flow (theta = 0).
+      const double R_flow = row_friction(together, 0, 2, 0) / scale, D_flow = row_load(together, 0, 2, 0) / scale;
+      const double R_apart = (row_friction(first, 0, 1, 0) + row_friction(second, 0, 1, 0)) / scale;
+      const double D_apart = (row_load(first, 0, 1, 0) + row_load(second, 0, 1, 0)) / scale;
+      const double R_ref = s.q.at(across ? "R_perp" : "R_par"), D_ref = s.q.at(across ? "D_perp" : "D_par");
+      std::printf("beta %.2f pair %g d %s the flow: R level 4 %.4f (apart %.4f), resolved %.4f (%+.1f %%); "
+                  "D level 4 %.4f (apart %.4f), resolved %.4f (%+.1f %%)\n",
+                  beta, s.spacing, across ? "across" : "along", R_flow, R_apart, R_ref, 100 * (R_flow / R_ref - 1),
+                  D_flow, D_apart, D_ref, 100 * (D_flow / D_ref - 1));
+      const std::string where = "beta " + std::to_string(beta) + " spacing " + std::to_string(s.spacing) +
+                                (across ? " across" : " along");
+      EXPECT_NEAR(R_flow / R_ref, 1.0, 0.10) << where << " friction";
+      EXPECT_NEAR(D_flow / D_ref, 1.0, 0.10) << where << " held load";
+      EXPECT_LT(std::fabs(R_flow - R_ref), std::fabs(R_apart - R_ref)) << where << " friction: closer than apart";
+      EXPECT_LT(std::fabs(D_flow - D_ref), std::fabs(D_apart - D_ref)) << where << " held load: closer than apart";
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 6) << "pairs at 1 d (beta 0.15, 0.3) and 2 d (beta 0.15), two directions";
+}
+
+TEST(RigidRodTransport, Level4RodsFarApartAreEachAlone) {
+  // Two 10-sphere rods across the flow, one behind the other at centre
+  // distance s along x, in one level-4 window: each rod's friction and load
+  // approach those of the rod alone (its own window) as s grows; near the
+  // interaction reach (where fix rod/implicit stops evaluating them
+  // together) they are each alone within 1 %, the window's own convergence
+  // (TwoWayWindowModel.WindowConvergedFrictionAlongAndAcross: 0.3 %) plus
+  // the far field the reach drops (1e-3 per sphere pair).
+  const double beta = 0.15;
+  const hsrod_test::UniformStream stream(kD / beta);
+  const auto m = model("twoway", beta);
+  RodGeometry alone = straight_rod(10, kD, kPi / 2);
+  alone.id = 1;
+  RodDrag own;
+  m->evaluate(alone, stream, own);
+  const double load_alone = row_load(own, 0, 10, 0), friction_alone = row_friction(own, 0, 10, 0);
+  double previous = 0.0;
+  const double reach = m->interaction_reach();
+  for (const double s : {2.0 * kD, 5.0 * kD, reach}) {
+    RodGeometry lead = straight_rod(10, kD, kPi / 2), trail = straight_rod(10, kD, kPi / 2);
+    lead.id = 1;
+    trail.id = 2;
+    for (auto& x : trail.positions) x.x() -= s;
+    RodDrag both;
+    m->evaluate_rods({lead, trail}, stream, both, m->make_state().get());
+    const double lead_load = row_load(both, 0, 10, 0) / load_alone, trail_load = row_load(both, 10, 10, 0) / load_alone;
+    const double lead_friction = row_friction(both, 0, 10, 0) / friction_alone;
+    std::printf("level 4, two rods across the flow %.3g um apart: load / alone leading %.4f, trailing %.4f; "
+                "friction / alone leading %.4f\n", 1e6 * s, lead_load, trail_load, lead_friction);
+    EXPECT_LT(lead_load, 1.0);
+    EXPECT_LT(trail_load, 1.0);
+    EXPECT_GT(lead_load, previous) << "shielding weakens with distance";
+    previous = lead_load;
+    if (s == reach) {
+      EXPECT_NEAR(lead_load, 1.0, 0.01);
+      EXPECT_NEAR(trail_load, 1.0, 0.01);
+      EXPECT_NEAR(lead_friction, 1.0, 0.01);
+    }
+  }
+}

@@ -16,7 +16,7 @@ double SphereMaterial::mass() const { return density * kPi * diameter * diameter
 double SphereMaterial::moment_of_inertia() const { return mass() * diameter * diameter / 10.0; }
 
 RodStabilityLimits compute_stability_limits(const RodLayout& layout, const SphereMaterial& sphere,
-                                            const BeamBondMaterial& bond, double viscosity) {
+                                            const BeamBondMaterial& bond, double viscosity, bool with_damping) {
   RodStabilityLimits lim;
   const double m = sphere.mass();
   const double inertia = sphere.moment_of_inertia();
@@ -41,7 +41,8 @@ RodStabilityLimits compute_stability_limits(const RodLayout& layout, const Spher
   const double omega2 = eig.eigenvalues().maxCoeff();
   lim.highest_bond_frequency = std::sqrt(std::max(omega2, 0.0));
   lim.explicit_bond_limit = lim.highest_bond_frequency > 0.0 ? 2.0 / lim.highest_bond_frequency : 0.0;
-  if (bond.damping_ratio > 0.0 && lim.explicit_bond_limit > 0.0) {
+  lim.damping_included = with_damping || !(bond.damping_ratio > 0.0);
+  if (with_damping && bond.damping_ratio > 0.0 && lim.explicit_bond_limit > 0.0) {
     // Bond dashpots, evaluated at LIGGGHTS' half-step velocities, lower the
     // limit. The reduction factor converges fast with rod length: take it
     // from the first (up to) 8 spheres' worth of rod, where the dense

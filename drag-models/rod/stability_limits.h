@@ -29,6 +29,9 @@ struct RodStabilityLimits {
   // Velocity Verlet (fix nve/sphere) is unstable above this step: 2 / omega_max
   // for undamped bonds, lower with bond damping (see velocity_verlet_limit).
   double explicit_bond_limit = 0.0;  // [s]
+  // Whether explicit_bond_limit includes the bond dashpots' reduction (it
+  // is 2 / omega_max when not: compute_stability_limits(..., false)).
+  bool damping_included = true;
 
   // A human-readable table (one line per limit) for the run's log.
   std::string table(double timestep) const;
@@ -37,7 +40,11 @@ struct RodStabilityLimits {
 // `viscosity` [Pa s] may be 0 (no fluid). The highest bond frequency comes
 // from the generalised eigenproblem K v = omega^2 M v of the rod's bonds
 // linearised about the straight rest state (all 6 dof per sphere).
+// `with_damping` false skips the dashpots' reduction of the explicit limit
+// (an eigenvalue bisection on the one-step map, ~7e8 instructions, most of
+// a short run's start-up): for callers whose bonds are integrated
+// implicitly, where the explicit limit does not bind.
 RodStabilityLimits compute_stability_limits(const RodLayout& layout, const SphereMaterial& sphere,
-                                            const BeamBondMaterial& bond, double viscosity);
+                                            const BeamBondMaterial& bond, double viscosity, bool with_damping = true);
 
 }  // namespace hsrod

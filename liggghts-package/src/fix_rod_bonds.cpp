@@ -314,6 +314,6 @@ double FixRodBonds::compute_vector(int n) {
     MPI_Allreduce(&max_strain_, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
     return largest;
   }
-  return explicit_limit_;
+  return explicit_bond_limit();  // with the bond damping (computed now if init() skipped it)
 }
 

@@ -64,8 +64,14 @@ class FixRodBonds : public Fix, public RodBondRecords {
   // Largest number of bonds one sphere can store a rest state for.
   static const int max_bonds_per_sphere = 8;
 
-  // Explicit stability limit of the rod's bonds [s] (computed in init()).
-  double explicit_bond_limit() const { return explicit_limit_; }
+  // Explicit stability limit of the rod's bonds [s], bond damping included
+  // (computed in init(); when a fix rod/implicit integrates the bonds, init()
+  // skips the damping's costly reduction and it is computed here on demand).
+  double explicit_bond_limit();
+  // The limit as init() left it: without the damping's reduction (2/omega_max)
+  // when the bonds are integrated implicitly [s]; bond_limit_damped() says which.
+  double explicit_bond_limit_known() const { return explicit_limit_; }
+  bool bond_limit_damped() const { return limits_.damping_included; }
 
   // The rod's bonds as one material: the one place where E, nu and the
   // bond thickness become stiffness (rod/rod_bond_set.h).
@@ -123,6 +129,9 @@ class FixRodBonds : public Fix, public RodBondRecords {
   BondRestRecord *find_or_create_record(int i, int j, int partner_tag);
   void reset_atom(int i);
   void compute_stability_limits();
+  // limits_ for spheres of diameter d [m] and density rho [kg/m3], with the
+  // damping's reduction if `damped` (cached: recomputed only when needed).
+  void ensure_limits(double d, double density, bool damped);
   void compute_bonds();
   void parse_keywords(int narg, char **arg);
 };

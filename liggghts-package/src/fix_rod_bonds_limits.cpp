@@ -22,6 +22,29 @@
 
 using namespace LAMMPS_NS;
 
+void FixRodBonds::ensure_limits(double d, double density, bool damped) {
+  // The limits depend only on the spheres and the material: computed once
+  // and reused by later runs (the damped limit takes an eigen-bisection).
+  if (d == limits_diameter_ && density == limits_density_ && (limits_.damping_included || !damped)) return;
+  hsrod::RodSpec chain;
+  chain.number_of_sections = 20;  // omega_max of a chain has converged by 20 spheres
+  chain.sphere_diameter = d;
+  const hsrod::BeamBondMaterial bond = bond_set_.material(0.5 * d, 0.5 * d);
+  limits_ = hsrod::compute_stability_limits(hsrod::make_rod_layout(chain),
+                                            {d, density, bond_set_.youngs_modulus, bond_set_.poisson_ratio}, bond, 0.0,
+                                            damped);
+  limits_diameter_ = d;
+  limits_density_ = density;
+}
+
+double FixRodBonds::explicit_bond_limit() {
+  if (limits_diameter_ > 0.0 && !limits_.damping_included) {
+    ensure_limits(limits_diameter_, limits_density_, true);
+    explicit_limit_ = limits_.explicit_bond_limit;
+  }
+  return explicit_limit_;
+}
+
 void FixRodBonds::compute_stability_limits() {
   // The stiffest, lightest sphere of the group bounds the explicit step.
   double dmin = 1e300, mass_min = 1e300;
@@ -39,18 +62,9 @@ void FixRodBonds::compute_stability_limits() {
   const double d = global[0];
   const double density = global[1] / (hsrod::kPi * d * d * d / 6.0);
 
-  // The limits depend only on the spheres and the material: computed once
-  // and reused by later runs (the damped limit takes an eigen-bisection).
-  if (!(d == limits_diameter_ && density == limits_density_)) {
-    hsrod::RodSpec chain;
-    chain.number_of_sections = 20;  // omega_max of a chain has converged by 20 spheres
-    chain.sphere_diameter = d;
-    const hsrod::BeamBondMaterial bond = bond_set_.material(0.5 * d, 0.5 * d);
-    limits_ = hsrod::compute_stability_limits(
-        hsrod::make_rod_layout(chain), {d, density, bond_set_.youngs_modulus, bond_set_.poisson_ratio}, bond, 0.0);
-    limits_diameter_ = d;
-    limits_density_ = density;
-  }
+  // Under fix rod/implicit the explicit limit does not bind: the damping's
+  // reduction (an eigen-bisection) is left to explicit_bond_limit().
+  ensure_limits(d, density, !integrated_implicitly_);
   const hsrod::RodStabilityLimits &limits = limits_;
   explicit_limit_ = limits.explicit_bond_limit;  // includes the bond damping
 
@@ -59,8 +73,9 @@ void FixRodBonds::compute_stability_limits() {
     char head[256];
     std::snprintf(head, sizeof(head),
                   "fix rod/bonds %s: stability limits for d = %g m, rho = %g kg/m3, E = %g Pa "
-                  "(timestep %g s, explicit limit with damping %g s)\n",
-                  id, d, density, bond_set_.youngs_modulus, update->dt, explicit_limit_);
+                  "(timestep %g s, explicit limit %s %g s)\n",
+                  id, d, density, bond_set_.youngs_modulus, update->dt,
+                  limits.damping_included ? "with damping" : "without the bond damping's reduction", explicit_limit_);
     if (screen) fprintf(screen, "%s%s", head, table.c_str());
     if (logfile) fprintf(logfile, "%s%s", head, table.c_str());
     limits_printed_ = true;

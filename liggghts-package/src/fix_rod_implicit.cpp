@@ -158,9 +158,10 @@ void FixRodImplicit::setup(int) {
     char msg[512];
     std::snprintf(msg, sizeof(msg),
                   "fix rod/implicit: overdamped linearly implicit step dt = %g s; bonds, drag and wall contacts "
-                  "implicit (explicit bond limit %g s: dt is %.0f x larger)\n",
-                  update->dt, bonds_->explicit_bond_limit(),
-                  bonds_->explicit_bond_limit() > 0 ? update->dt / bonds_->explicit_bond_limit() : 0.0);
+                  "implicit (explicit bond limit%s %g s: dt is %.0f x larger)\n",
+                  update->dt, bonds_->bond_limit_damped() ? "" : " without bond damping",
+                  bonds_->explicit_bond_limit_known(),
+                  bonds_->explicit_bond_limit_known() > 0 ? update->dt / bonds_->explicit_bond_limit_known() : 0.0);
     if (screen) fputs(msg, screen);
     if (logfile) fputs(msg, logfile);
   }

@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 #include <mpi.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -126,6 +127,31 @@ void broadcast(std::string &text) {
   MPI_Bcast(&length, 1, MPI_LONG, 0, MPI_COMM_WORLD);
   text.resize(static_cast<std::size_t>(length));
   MPI_Bcast(text.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD);
+}
+
+// Per rank: cases, busy wall, case CPU, own CPU; then the load-independent
+// efficiency of the farm: summed busy time over (case-running ranks x the
+// sweep's makespan), 1 when every worker had a case running from the first
+// to the last moment (machine load slows busy time and makespan alike; a
+// worker idle at the end, waiting for the others' last cases, counts).
+void print_rank_accounting(const std::vector<double> &all, int ranks) {
+  double makespan = 0.0, busy = 0.0, case_cpu = 0.0;
+  for (int r = 0; r < ranks; ++r) makespan = std::max(makespan, all[6 * static_cast<std::size_t>(r) + 2]);
+  int runners = 0;
+  for (int r = 0; r < ranks; ++r) {
+    const double *a = &all[6 * static_cast<std::size_t>(r)];
+    const bool runs_cases = ranks == 1 || r > 0;
+    std::printf("hsrod-sweep: rank %d: %.0f case(s), busy %.4g s of the %.4g s sweep (%.1f %%), case CPU %.4g s, own "
+                "CPU %.3g s%s\n", r, a[0], a[1], makespan, makespan > 0 ? 100.0 * a[1] / makespan : 0.0, a[3], a[4],
+                runs_cases ? "" : " (scheduler)");
+    if (!runs_cases) continue;
+    ++runners;
+    busy += a[1];
+    case_cpu += a[3];
+  }
+  std::printf("hsrod-sweep: busy fraction %.2f %% (summed case wall %.4g s / (%d case-running rank(s) x %.4g s)); "
+              "summed case CPU %.4g s\n", makespan > 0 ? 100.0 * busy / (runners * makespan) : 0.0, busy, runners,
+              makespan, case_cpu);
 }
 
 }  // namespace
@@ -254,8 +280,14 @@ int main(int argc, char **argv) {
     }
     record_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - record_start).count();
   };
-  run_task_farm(*grid, setup, prepared.pending, on_finished);
+  const FarmReport farm = run_task_farm(*grid, setup, prepared.pending, on_finished);
+  // Per-rank accounting on rank 0: cases, busy and elapsed wall, case CPU, own CPU.
+  const double mine[6] = {static_cast<double>(farm.run), farm.busy_seconds, farm.elapsed_seconds,
+                          farm.case_cpu_seconds, farm.own_cpu_seconds, 0.0};
+  std::vector<double> all(rank == 0 ? 6 * static_cast<std::size_t>(ranks) : 0);
+  MPI_Gather(mine, 6, MPI_DOUBLE, all.data(), 6, MPI_DOUBLE, 0, MPI_COMM_WORLD);
   if (rank == 0) {
+    print_rank_accounting(all, ranks);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double n = done_now ? static_cast<double>(done_now) : 1.0;
     std::printf("hsrod-sweep: finished %zu case(s) (%zu failed) in %s wall; per case: %.3g s wall and %.3g s CPU "

@@ -2,10 +2,12 @@
 
 #include <mpi.h>
 
+#include <chrono>
 #include <deque>
 #include <memory>
 #include <string>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace hsrod::sweep {
@@ -62,6 +64,8 @@ void worker_loop(const CaseGrid &grid, const CaseSetup &setup, FarmReport &repor
     process.wait(-1);
     const CaseOutcome outcome = process.outcome();
     ++report.run;
+    report.busy_seconds += outcome.wall_seconds;
+    report.case_cpu_seconds += outcome.cpu_seconds;
     if (!outcome.ok) ++report.failed;
     message = pack(static_cast<std::size_t>(id), outcome);
   }
@@ -112,7 +116,10 @@ void scheduler_loop(const CaseGrid &grid, const CaseSetup &setup, const std::vec
     }
     if (local) {
       if (local->wait(active_workers > 0 ? poll_ms : -1)) {  // nobody to serve: just wait for the case
-        finished(local->id(), local->outcome());
+        const CaseOutcome outcome = local->outcome();
+        report.busy_seconds += outcome.wall_seconds;
+        report.case_cpu_seconds += outcome.cpu_seconds;
+        finished(local->id(), outcome);
         local.reset();
       }
     } else {
@@ -128,10 +135,20 @@ FarmReport run_task_farm(const CaseGrid &grid, const CaseSetup &setup, const std
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   FarmReport report;
+  const auto own_cpu = [] {
+    rusage usage{};
+    ::getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+           1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  };
+  const double cpu_start = own_cpu();
+  const auto start = std::chrono::steady_clock::now();
   if (rank == 0)
     scheduler_loop(grid, setup, pending, on_finished, report);
   else
     worker_loop(grid, setup, report);
+  report.own_cpu_seconds = own_cpu() - cpu_start;
+  report.elapsed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }
 

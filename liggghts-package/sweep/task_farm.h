@@ -30,6 +30,13 @@ namespace hsrod::sweep {
 struct FarmReport {
   std::size_t run = 0;     // cases run by this invocation
   std::size_t failed = 0;  // of which failed
+  // This rank's accounting (load-independent parallel efficiency: a rank
+  // is busy while a case of its own runs; idle time is scheduling, waiting
+  // for work or for the last cases of other ranks).
+  double busy_seconds = 0.0;      // summed wall time of the cases it ran [s]
+  double case_cpu_seconds = 0.0;  // summed CPU time of those cases [s]
+  double own_cpu_seconds = 0.0;   // CPU time of this process itself, children excluded [s]
+  double elapsed_seconds = 0.0;   // wall time of run_task_farm on this rank [s]
 };
 
 // Called on rank 0 for every finished case, in the order they finish.

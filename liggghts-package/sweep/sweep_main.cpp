@@ -141,10 +141,13 @@ void print_rank_accounting(const std::vector<double> &all, int ranks) {
   for (int r = 0; r < ranks; ++r) {
     const double *a = &all[6 * static_cast<std::size_t>(r)];
     const bool runs_cases = ranks == 1 || r > 0;
+    if (!runs_cases) {
+      std::printf("hsrod-sweep: rank %d (scheduler): %.0f row(s) written, own CPU %.3g s in the %.4g s sweep\n", r, a[0],
+                  a[4], makespan);
+      continue;
+    }
     std::printf("hsrod-sweep: rank %d: %.0f case(s), busy %.4g s of the %.4g s sweep (%.1f %%), case CPU %.4g s, own "
-                "CPU %.3g s%s\n", r, a[0], a[1], makespan, makespan > 0 ? 100.0 * a[1] / makespan : 0.0, a[3], a[4],
-                runs_cases ? "" : " (scheduler)");
-    if (!runs_cases) continue;
+                "CPU %.3g s\n", r, a[0], a[1], makespan, makespan > 0 ? 100.0 * a[1] / makespan : 0.0, a[3], a[4]);
     ++runners;
     busy += a[1];
     case_cpu += a[3];

@@ -1,6 +1,7 @@
 #include "dynamics/overdamped_rod_step.h"
 
-#include "dynamics/dense_lu.h"
+#include "dynamics/coupled_chain_solve.h"
+#include "common/dense_lu.h"
 #include "dynamics/finite_rotation_update.h"
 #include "dynamics/small_block_lu.h"
 
@@ -260,10 +261,13 @@ struct OverdampedRodSolver::Workspace {
   std::vector<int> analysed_outer, analysed_inner;  // pattern `lu` was analysed for
   Eigen::MatrixXd dense;  // assembled matrix, then its LU factors (dense_lu)
   DenseLu dense_lu;
+  // A chain with non-local drag: its blocks above plus the dense resistance,
+  // solved through the Schur complement on the coupled translations.
+  CoupledChainSolve coupled_chain;
 
   // The factorisation of the last step, for newton_correction: which one
   // is kept, and the last step's solution dy and dt.
-  enum class Kept { none, banded, dense, sparse };
+  enum class Kept { none, banded, coupled_chain, dense, sparse };
   Kept kept = Kept::none;
   Eigen::VectorXd last_dy;
   double last_dt = 0.0;
@@ -609,21 +613,23 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   w.analyse_structure(rod);
   if (static_cast<int>(w.previous_velocities.size()) != n) w.previous_velocities.assign(n, Vector6d::Zero());
 
-  // A chain with local drag (the common case) goes to the block-tridiagonal
-  // solve unless a self-contact appears: its blocks are assembled while the
-  // bonds are evaluated, each bond's 12 x 12 Jacobian used where it is made
-  // and not stored (at 10 000 spheres the stored Jacobians alone are 11 MB,
-  // beyond the caches). The sums are those of add_couplings in its order:
-  // drag, then bonds in order, then wall contacts.
+  // A chain (the common case) goes to the block-tridiagonal solve unless a
+  // self-contact appears: its blocks are assembled while the bonds are
+  // evaluated, each bond's 12 x 12 Jacobian used where it is made and not
+  // stored (at 10 000 spheres the stored Jacobians alone are 11 MB, beyond
+  // the caches). The sums are those of add_couplings in its order: drag,
+  // then bonds in order, then wall contacts. With non-local drag the
+  // blocks hold all but the translations' resistance, which the Schur
+  // complement solve (dynamics/coupled_chain_solve.h) adds.
   const bool automatic = w.method == LinearSolver::automatic;
-  const bool fused = automatic && w.chain && !drag.coupled() && n > 0;
+  const bool fused = automatic && w.chain && n > 0;
   if (fused) {
     for (int k = 0; k < n; ++k) {
       w.diagonal[k].setZero();
       w.upper[k].setZero();
       w.lower[k].setZero();
       w.diagonal[k].block<3, 3>(3, 3) += drag.rotational_resistance[k] / dt * Eigen::Matrix3d::Identity();
-      w.diagonal[k].block<3, 3>(0, 0) += drag.resistance[k] / dt;
+      if (!drag.coupled()) w.diagonal[k].block<3, 3>(0, 0) += drag.resistance[k] / dt;
     }
   }
 
@@ -693,9 +699,19 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
       w.diagonal[c.sphere].block<3, 3>(0, 0) += c.stiffness;
       if (c.rubbing) w.diagonal[c.sphere] += c.friction / dt;
     }
-    w.solve_banded(n);
-    w.kept = Workspace::Kept::banded;
-    ++w.statistics.banded_steps;
+    if (drag.coupled()) {
+      w.coupled_chain.factorise(w.diagonal, w.upper, w.lower, drag.coupled_resistance, dt,
+                                CoupledChainSolve::coupled_components(drag.coupled_resistance));
+      w.dy = rhs;
+      w.coupled_chain.solve_in_place(w.dy);
+      displacement = &w.dy;
+      w.kept = Workspace::Kept::coupled_chain;
+      ++w.statistics.dense_steps;
+    } else {
+      w.solve_banded(n);
+      w.kept = Workspace::Kept::banded;
+      ++w.statistics.banded_steps;
+    }
   } else if (automatic && !drag.coupled() && w.fits_groups()) {
     const int g = w.group_spheres;
     for (int k = 0; k < static_cast<int>(w.group_diagonal.size()); ++k) {
@@ -862,6 +878,10 @@ bool OverdampedRodSolver::newton_correction(const OverdampedRod& rod, const RodD
     case Workspace::Kept::banded:
       delta = r;
       w.resolve_banded(delta);
+      break;
+    case Workspace::Kept::coupled_chain:
+      delta = r;
+      w.coupled_chain.solve_in_place(delta);
       break;
     case Workspace::Kept::dense:
       delta = r;

@@ -28,7 +28,9 @@
 // (6g x 6g blocks, the same elimination with dense block LUs). Couplings
 // off these bands (a self-contact of a folding rod between spheres further
 // apart, wider bonds) take a sparse LU; a non-local (dense 3n x 3n) resistance takes a dense LU, which
-// is then the step's O(n^3) cost.
+// is then the step's O(n^3) cost: for a chain only of the translations it couples (the Schur
+// complement, 2n x 2n for the depth-averaged models; dynamics/coupled_chain_solve.h), otherwise of
+// the whole 6n x 6n matrix.
 #pragma once
 
 #include "dynamics/wall_contact.h"
@@ -102,7 +104,7 @@ struct OverdampedSolverStatistics {
   double solve_seconds = 0.0;    // assembly, factorisation, substitution, update [s]
   long banded_steps = 0;         // steps solved block-tridiagonally (spheres or groups of spheres)
   long sparse_steps = 0;         // steps solved by the sparse LU
-  long dense_steps = 0;          // steps solved by a dense LU
+  long dense_steps = 0;          // steps solved by a dense LU (of the whole matrix, or of a chain's coupled translations)
 };
 
 // A rod at rest in its layout (identity orientations), bonds from `material`.

@@ -1,4 +1,6 @@
 #include "hydro/nonlocal_model.h"
+#include "common/dense_cholesky.h"
+#include "common/dense_lu.h"
 #include "common/math_constants.h"
 
 #include "hydro/brinkman_green.h"
@@ -48,26 +50,40 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
     }
   }
   // R_o itself is an output (it enters the implicit step's matrix), so the
-  // inverse is what is wanted here, from one partial-pivoting LU; the
-  // driving reuses it. (A separate solve for the driving moved the pore
-  // benchmark's level-3 errors in their 6th digit, tests/benchmarks/RESULTS.md.)
-  const Eigen::MatrixXd planar = zo * coupling.partialPivLu().inverse();
-  Eigen::MatrixXd obstruction = Eigen::MatrixXd::Zero(3 * n, 3 * n);
-  for (int i = 0; i < n; ++i) {
-    for (int k = 0; k < n; ++k) obstruction.block<2, 2>(3 * i, 3 * k) = planar.block<2, 2>(2 * i, 2 * k);
-    obstruction(3 * i + 2, 3 * i + 2) = zo;
+  // inverse is what is wanted here; the driving reuses it. (A separate solve
+  // for the driving moved the pore benchmark's level-3 errors in their 6th
+  // digit, tests/benchmarks/RESULTS.md.) I + zeta_o M is symmetric (G and
+  // the near field are) and, R_o being a resistance, positive definite: the
+  // Cholesky inverse (common/dense_cholesky.h, ~1/2 the flops of an LU and
+  // its inverse, ~1/5 of Eigen's blocked ones at this size); a partial-
+  // pivoting LU should a pivot not be positive.
+  Eigen::MatrixXd factor, inverse;
+  if (!cholesky_inverse(coupling, factor, inverse)) {
+    DenseLu lu;
+    lu.compute_in_place(coupling);
+    lu.inverse(inverse);
   }
-  Eigen::MatrixXd resistance = obstruction;
-  resistance.diagonal().array() += film_friction_;
-  out.coupled_resistance = 0.5 * (resistance + resistance.transpose());
+  inverse *= zo;  // the in-plane R_o
+  // R = zeta_f I + R_o, symmetrised: R_o = zeta_o (I + zeta_o M)^-1 in the
+  // plane, zeta_o along z.
+  Eigen::MatrixXd& resistance = out.coupled_resistance;
+  resistance.setZero(3 * n, 3 * n);
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < 2; ++c)
+      for (int i = 0; i < n; ++i)
+        for (int r = 0; r < 2; ++r)
+          resistance(3 * i + r, 3 * k + c) =
+              0.5 * (inverse(2 * i + r, 2 * k + c) + inverse(2 * k + c, 2 * i + r));
+  for (int i = 0; i < n; ++i) resistance(3 * i + 2, 3 * i + 2) = zo;
+  for (int i = 0; i < 3 * n; ++i) resistance(i, i) += film_friction_;
 
   sample_flow(rod, flow, out);
-  Eigen::VectorXd u(3 * n);
-  for (int i = 0; i < n; ++i) u.segment<3>(3 * i) = out.driving_force[i];
-  const Eigen::VectorXd driving = kMidplaneFactor * (obstruction * u);
+  Eigen::VectorXd u(2 * n);
+  for (int i = 0; i < n; ++i) u.segment<2>(2 * i) = out.driving_force[i].head<2>();
+  const Eigen::VectorXd driving = kMidplaneFactor * (inverse * u);
   for (int i = 0; i < n; ++i) {
-    out.driving_force[i] = driving.segment<3>(3 * i);
-    out.resistance[i] = out.coupled_resistance.block<3, 3>(3 * i, 3 * i);
+    out.driving_force[i] << driving.segment<2>(2 * i), kMidplaneFactor * (zo * out.driving_force[i].z());
+    out.resistance[i] = resistance.block<3, 3>(3 * i, 3 * i);
   }
 }
 

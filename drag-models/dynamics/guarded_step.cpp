@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace hsrod {
 namespace {
@@ -52,11 +53,19 @@ Eigen::VectorXd elastic_loads(const OverdampedRod& rod, const ChannelGeometry* g
 }
 
 // True when the centre at p lies in a planform wall or outside the gap.
+bool in_gap_wall(const Eigen::Vector3d& p, const ChannelGeometry& geometry, const WallContactParameters* walls) {
+  return walls && walls->gap_walls && (p.z() < walls->gap_bottom || p.z() > walls->gap_bottom + geometry.gap_height());
+}
+
 bool in_wall(const Eigen::Vector3d& p, const ChannelGeometry& geometry, const WallContactParameters* walls) {
   if (geometry.signed_distance(p.x(), p.y()) < 0.0) return true;
-  if (walls && walls->gap_walls)
-    return p.z() < walls->gap_bottom || p.z() > walls->gap_bottom + geometry.gap_height();
-  return false;
+  return in_gap_wall(p, geometry, walls);
+}
+
+// Work storage of assess_step (its start distances), kept between steps.
+std::vector<double>& thread_local_start_distance() {
+  thread_local std::vector<double> distances;
+  return distances;
 }
 
 }  // namespace
@@ -111,30 +120,46 @@ StepAssessment assess_step(const std::vector<Eigen::Vector3d>& x0, const Overdam
   }
   a.bond_load_ratio = drag_load > 0.0 ? bond_load / drag_load : (bond_load > 0.0 ? HUGE_VAL : 0.0);
   // Walls: the new centre, and the path (sampled every quarter radius).
+  // The planform's signed distance is 1-Lipschitz (a minimum of distances),
+  // so a path shorter in the plane than the start's distance to the walls
+  // (by a margin far above rounding) has every sample off them: only the
+  // gap walls are then checked along it (the same answers, fewer distances;
+  // the start's distance is kept for the overlap check below).
+  std::vector<double>& start_distance = thread_local_start_distance();
   if (limits.check_walls && geometry) {
+    start_distance.assign(n, 0.0);
     for (int i = 0; i < n && a.crossing_sphere < 0; ++i) {
       const Eigen::Vector3d step = after.positions[i] - x0[i];
       const int samples = std::clamp(static_cast<int>(std::ceil(step.norm() / (0.25 * after.radii[i]))), 1, 64);
-      for (int k = 1; k <= samples; ++k)
-        if (in_wall(x0[i] + step * (double(k) / samples), *geometry, walls) && !in_wall(x0[i], *geometry, walls)) {
+      const double d0 = geometry->signed_distance(x0[i].x(), x0[i].y());
+      start_distance[i] = d0;
+      const double reach = step.head<2>().norm();
+      const bool planform_clear = d0 - reach > 1e-9 * (std::fabs(d0) + reach);
+      for (int k = 1; k <= samples; ++k) {
+        const Eigen::Vector3d p = x0[i] + step * (double(k) / samples);
+        if ((planform_clear ? in_gap_wall(p, *geometry, walls) : in_wall(p, *geometry, walls)) &&
+            !in_wall(x0[i], *geometry, walls)) {
           a.crossing_sphere = i;
           break;
         }
+      }
     }
   }
   // New wall overlap beyond max_overlap radii.
   if (limits.check_walls && geometry && a.crossing_sphere < 0) {
     for (int i = 0; i < n; ++i) {
       const double radius = after.radii[i];
-      auto overlap = [&](const Eigen::Vector3d& p) {
-        double o = radius - geometry->signed_distance(p.x(), p.y());
+      auto overlap = [&](const Eigen::Vector3d& p, double planform_distance) {
+        double o = radius - planform_distance;
         if (walls && walls->gap_walls) {
           o = std::max(o, radius - (p.z() - walls->gap_bottom));
           o = std::max(o, radius - (walls->gap_bottom + geometry->gap_height() - p.z()));
         }
         return o;
       };
-      const double grown = overlap(after.positions[i]) - std::max(0.0, overlap(x0[i]));
+      const Eigen::Vector3d& p1 = after.positions[i];
+      const double grown = overlap(p1, geometry->signed_distance(p1.x(), p1.y())) -
+                           std::max(0.0, overlap(x0[i], start_distance[i]));
       if (grown > limits.max_overlap * radius) {
         a.crossing_sphere = i;
         break;

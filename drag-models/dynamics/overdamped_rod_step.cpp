@@ -162,16 +162,22 @@ void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double rea
       if (positions[i].allFinite()) cells.push_back(cell_of(i));
     std::sort(cells.begin(), cells.end(), cell_order);
   }
+  // Cells (cx + dx, cy - 1 .. cy + 1) are contiguous in the sorted list,
+  // and where that run starts only moves forward as c goes through the
+  // list in order: one cursor per dx, advanced instead of searched for
+  // (O(n) in all; the pairs found and their order are those of a search).
+  std::size_t start[3] = {0, 0, 0};
   for (const Cell& c : cells) {
-    // Cells (cx + dx, cy - 1 .. cy + 1) are contiguous in the sorted list.
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
       const Cell first{c.cx + dx, c.cy - 1, -1};
-      for (auto it = std::lower_bound(cells.begin(), cells.end(), first, cell_order);
-           it != cells.end() && it->cx == first.cx && it->cy <= c.cy + 1; ++it) {
-        if (it->sphere <= c.sphere) continue;
-        const Eigen::Vector3d offset = positions[c.sphere] - positions[it->sphere];
+      std::size_t& k = start[dx + 1];
+      while (k < cells.size() && cell_order(cells[k], first)) ++k;
+      for (std::size_t m = k; m < cells.size() && cells[m].cx == first.cx && cells[m].cy <= c.cy + 1; ++m) {
+        const Cell& other = cells[m];
+        if (other.sphere <= c.sphere) continue;
+        const Eigen::Vector3d offset = positions[c.sphere] - positions[other.sphere];
         if (std::fabs(offset.x()) > reach || std::fabs(offset.y()) > reach) continue;
-        pairs.emplace_back(c.sphere, it->sphere);
+        pairs.emplace_back(c.sphere, other.sphere);
       }
     }
   }
@@ -218,6 +224,7 @@ struct OverdampedRodSolver::Workspace {
   int analysed_spheres = -1;
   std::vector<std::pair<int, int>> analysed_bonds;
   bool chain = false;                        // every bond joins spheres k and k+1
+  bool ordered_chain = false;                // a chain whose bond k joins spheres k and k+1
   // Sections: with bonds joining spheres at most g apart in the numbering
   // (g = 4 for the 2x2 sections of create_rod's `section 2`), groups of g
   // consecutive spheres couple only their neighbouring groups, so the
@@ -304,6 +311,8 @@ struct OverdampedRodSolver::Workspace {
   template <typename Add>
   void add_couplings(const OverdampedRod& rod, const RodDrag& drag, double dt, Add add) const;
   void solve_banded(int n);
+  void eliminate_banded(int k, int n);
+  void back_substitute_banded(int n);
   void resolve_banded(Eigen::VectorXd& b) const;
   bool fits_groups() const;
   void solve_grouped();
@@ -321,9 +330,11 @@ void OverdampedRodSolver::Workspace::analyse_structure(const OverdampedRod& rod)
   analysed_spheres = n;
   analysed_bonds.clear();
   chain = true;
+  ordered_chain = static_cast<int>(rod.bonds.size()) == n - 1;
   int bandwidth = 0;  // largest |i - j| of a bond
   std::vector<int> count(n + 1, 0);
   for (const RodBond& b : rod.bonds) {
+    if (std::min(b.i, b.j) != static_cast<int>(analysed_bonds.size())) ordered_chain = false;
     analysed_bonds.emplace_back(b.i, b.j);
     if (std::abs(b.i - b.j) != 1) chain = false;
     bandwidth = std::max(bandwidth, std::abs(b.i - b.j));
@@ -333,6 +344,7 @@ void OverdampedRodSolver::Workspace::analyse_structure(const OverdampedRod& rod)
   for (int k = 0; k < n; ++k) count[k + 1] += count[k];
   partner_start = count;
   partners.assign(count[n], 0);
+  ordered_chain = ordered_chain && chain;
   for (const RodBond& b : rod.bonds) {
     partners[count[b.i]++] = b.j;
     partners[count[b.j]++] = b.i;
@@ -460,17 +472,24 @@ void OverdampedRodSolver::Workspace::add_couplings(const OverdampedRod& rod, con
 // Block elimination of the block-tridiagonal system in place: rhs becomes
 // the solution, upper[k] becomes A'(k,k)^-1 A(k,k+1).
 void OverdampedRodSolver::Workspace::solve_banded(int n) {
-  for (int k = 0; k < n; ++k) {
-    auto y = rhs.segment<6>(6 * k);
-    if (k > 0) {
-      diagonal[k].noalias() -= lower[k] * upper[k - 1];
-      y.noalias() -= lower[k] * rhs.segment<6>(6 * (k - 1));
-    }
-    SmallBlockLu<6>& block_lu = block_lus[k];
-    block_lu.compute(diagonal[k]);
-    block_lu.solve_in_place(y);
-    if (k + 1 < n) block_lu.solve_in_place(upper[k]);
+  for (int k = 0; k < n; ++k) eliminate_banded(k, n);
+  back_substitute_banded(n);
+}
+
+// Forward elimination of block row k (rows 0..k-1 eliminated before).
+void OverdampedRodSolver::Workspace::eliminate_banded(int k, int n) {
+  auto y = rhs.segment<6>(6 * k);
+  if (k > 0) {
+    diagonal[k].noalias() -= lower[k] * upper[k - 1];
+    y.noalias() -= lower[k] * rhs.segment<6>(6 * (k - 1));
   }
+  SmallBlockLu<6>& block_lu = block_lus[k];
+  block_lu.compute(diagonal[k]);
+  block_lu.solve_in_place(y);
+  if (k + 1 < n) block_lu.solve_in_place(upper[k]);
+}
+
+void OverdampedRodSolver::Workspace::back_substitute_banded(int n) {
   for (int k = n - 2; k >= 0; --k) rhs.segment<6>(6 * k).noalias() -= upper[k] * rhs.segment<6>(6 * (k + 1));
 }
 
@@ -613,6 +632,11 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   w.analyse_structure(rod);
   if (static_cast<int>(w.previous_velocities.size()) != n) w.previous_velocities.assign(n, Vector6d::Zero());
 
+  // Contacts first: whether a self-contact takes the step off the band
+  // decides how the bonds are assembled (they do not depend on the bonds).
+  w.find_contacts(rod, geometry, walls, result);
+  const Clock::time_point t_contacts = Clock::now();
+
   // A chain (the common case) goes to the block-tridiagonal solve unless a
   // self-contact appears: its blocks are assembled while the bonds are
   // evaluated, each bond's 12 x 12 Jacobian used where it is made and not
@@ -620,79 +644,91 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   // the caches). The sums are those of add_couplings in its order: drag,
   // then bonds in order, then wall contacts. With non-local drag the
   // blocks hold all but the translations' resistance, which the Schur
-  // complement solve (dynamics/coupled_chain_solve.h) adds.
+  // complement solve (dynamics/coupled_chain_solve.h) adds. With local drag
+  // and the bonds in chain order (bond k joins k and k+1) sphere k's block
+  // row is complete once bond k is in, and is eliminated there, in the same
+  // pass (solve_banded's operations in its order: the same result to the
+  // last bit), while its blocks are still in cache.
   const bool automatic = w.method == LinearSolver::automatic;
-  const bool fused = automatic && w.chain && n > 0;
-  if (fused) {
-    for (int k = 0; k < n; ++k) {
-      w.diagonal[k].setZero();
-      w.upper[k].setZero();
-      w.lower[k].setZero();
-      w.diagonal[k].block<3, 3>(3, 3) += drag.rotational_resistance[k] / dt * Eigen::Matrix3d::Identity();
-      if (!drag.coupled()) w.diagonal[k].block<3, 3>(0, 0) += drag.resistance[k] / dt;
-    }
-  }
-
-  // Right-hand side: driving and external loads, then bond loads in order.
+  const bool fused = automatic && w.chain && n > 0 && w.pair_contacts.empty();
+  const bool eliminate_in_pass = fused && !drag.coupled() && w.ordered_chain;
   Eigen::VectorXd& rhs = w.rhs;
   rhs.resize(ndof);
-  for (int i = 0; i < n; ++i) {
+  // Sphere i's blocks (drag) and right-hand side (driving and external loads).
+  const auto start_sphere = [&](int i) {
+    if (fused) {
+      w.diagonal[i].setZero();
+      w.upper[i].setZero();
+      w.lower[i].setZero();
+      w.diagonal[i].block<3, 3>(3, 3) += drag.rotational_resistance[i] / dt * Eigen::Matrix3d::Identity();
+      if (!drag.coupled()) w.diagonal[i].block<3, 3>(0, 0) += drag.resistance[i] / dt;
+    }
     rhs.segment<3>(6 * i) = drag.driving_force[i] + rod.external_forces[i];
     rhs.segment<3>(6 * i + 3) = drag.driving_torque[i] + rod.external_torques[i];
-  }
+  };
   // Bonds: loads at y_n and their Jacobian (K = -d loads / dy).
-  if (fused) {
-    BondLoads loads;
-    BondJacobian jacobian;
-    for (std::size_t k = 0; k < rod.bonds.size(); ++k) {
-      const RodBond& b = rod.bonds[k];
-      beam_bond_loads_and_jacobian(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j],
-                                   rod.orientations[b.j], b.rest, b.stiffness, loads, jacobian);
-      rhs.segment<6>(6 * b.i) += loads.head<6>();
-      rhs.segment<6>(6 * b.j) += loads.tail<6>();
-      // A chain bond joins k and k+1 in either order.
-      Matrix6d& ij = b.j == b.i + 1 ? w.upper[b.i] : w.lower[b.i];
-      Matrix6d& ji = b.j == b.i + 1 ? w.lower[b.j] : w.upper[b.j];
-      w.diagonal[b.i] += -jacobian.block<6, 6>(0, 0);
-      ij += -jacobian.block<6, 6>(0, 6);
-      ji += -jacobian.block<6, 6>(6, 0);
-      w.diagonal[b.j] += -jacobian.block<6, 6>(6, 6);
+  BondLoads loads;
+  BondJacobian jacobian;
+  const auto add_chain_bond = [&](const RodBond& b) {
+    beam_bond_loads_and_jacobian(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j], rod.orientations[b.j],
+                                 b.rest, b.stiffness, loads, jacobian);
+    rhs.segment<6>(6 * b.i) += loads.head<6>();
+    rhs.segment<6>(6 * b.j) += loads.tail<6>();
+    // A chain bond joins k and k+1 in either order.
+    Matrix6d& ij = b.j == b.i + 1 ? w.upper[b.i] : w.lower[b.i];
+    Matrix6d& ji = b.j == b.i + 1 ? w.lower[b.j] : w.upper[b.j];
+    w.diagonal[b.i] += -jacobian.block<6, 6>(0, 0);
+    ij += -jacobian.block<6, 6>(0, 6);
+    ji += -jacobian.block<6, 6>(6, 0);
+    w.diagonal[b.j] += -jacobian.block<6, 6>(6, 6);
+  };
+  if (eliminate_in_pass) {
+    std::size_t next_wall = 0;  // wall_contacts are in sphere order
+    start_sphere(0);
+    for (int k = 0; k < n; ++k) {
+      if (k + 1 < n) {
+        start_sphere(k + 1);
+        add_chain_bond(rod.bonds[k]);
+      }
+      for (; next_wall < w.wall_contacts.size() && w.wall_contacts[next_wall].sphere == k; ++next_wall) {
+        const SphereWallContact& c = w.wall_contacts[next_wall];
+        rhs.segment<3>(6 * k) += c.force;
+        w.diagonal[k].block<3, 3>(0, 0) += c.stiffness;
+        if (c.rubbing) w.diagonal[k] += c.friction / dt;
+      }
+      w.eliminate_banded(k, n);
     }
+    w.back_substitute_banded(n);
   } else {
-    w.bond_loads.resize(rod.bonds.size());
-    w.bond_jacobians.resize(rod.bonds.size());
-    for (std::size_t k = 0; k < rod.bonds.size(); ++k) {
-      const RodBond& b = rod.bonds[k];
-      beam_bond_loads_and_jacobian(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j],
-                                   rod.orientations[b.j], b.rest, b.stiffness, w.bond_loads[k], w.bond_jacobians[k]);
-      rhs.segment<6>(6 * b.i) += w.bond_loads[k].head<6>();
-      rhs.segment<6>(6 * b.j) += w.bond_loads[k].tail<6>();
+    for (int i = 0; i < n; ++i) start_sphere(i);
+    if (fused) {
+      for (const RodBond& b : rod.bonds) add_chain_bond(b);
+    } else {
+      w.bond_loads.resize(rod.bonds.size());
+      w.bond_jacobians.resize(rod.bonds.size());
+      for (std::size_t k = 0; k < rod.bonds.size(); ++k) {
+        const RodBond& b = rod.bonds[k];
+        beam_bond_loads_and_jacobian(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j],
+                                     rod.orientations[b.j], b.rest, b.stiffness, w.bond_loads[k],
+                                     w.bond_jacobians[k]);
+        rhs.segment<6>(6 * b.i) += w.bond_loads[k].head<6>();
+        rhs.segment<6>(6 * b.j) += w.bond_loads[k].tail<6>();
+      }
+    }
+    for (const SphereWallContact& c : w.wall_contacts) rhs.segment<3>(6 * c.sphere) += c.force;
+    for (const SpherePairContact& c : w.pair_contacts) {
+      rhs.segment<3>(6 * c.i) += c.force_on_i;
+      rhs.segment<3>(6 * c.j) -= c.force_on_i;
     }
   }
   const Clock::time_point t_bonds = Clock::now();
-  w.find_contacts(rod, geometry, walls, result);
-  const Clock::time_point t_contacts = Clock::now();
-  // A self-contact leaves the band: the other solvers need the stored
-  // Jacobians (the same evaluation again; rare).
-  if (fused && !w.pair_contacts.empty()) {
-    BondLoads loads;
-    w.bond_jacobians.resize(rod.bonds.size());
-    for (std::size_t k = 0; k < rod.bonds.size(); ++k) {
-      const RodBond& b = rod.bonds[k];
-      beam_bond_loads_and_jacobian(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j],
-                                   rod.orientations[b.j], b.rest, b.stiffness, loads, w.bond_jacobians[k]);
-    }
-  }
-
-  for (const SphereWallContact& c : w.wall_contacts) rhs.segment<3>(6 * c.sphere) += c.force;
-  for (const SpherePairContact& c : w.pair_contacts) {
-    rhs.segment<3>(6 * c.i) += c.force_on_i;
-    rhs.segment<3>(6 * c.j) -= c.force_on_i;
-  }
 
   // Matrix R / dt + K, factorised by the cheapest method its couplings allow.
   const Eigen::VectorXd* displacement = &rhs;
-  if (fused && w.pair_contacts.empty()) {
+  if (eliminate_in_pass) {
+    w.kept = Workspace::Kept::banded;  // solved in the bond pass
+    ++w.statistics.banded_steps;
+  } else if (fused) {
     // Drag and bonds are in the blocks already; the wall contacts last, as
     // add_couplings adds them.
     for (const SphereWallContact& c : w.wall_contacts) {
@@ -808,9 +844,9 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   OverdampedSolverStatistics& stats = w.statistics;
   ++stats.steps;
   stats.sphere_steps += n;
-  stats.bond_seconds += seconds_between(t_start, t_bonds);
-  stats.contact_seconds += seconds_between(t_bonds, t_contacts);
-  stats.solve_seconds += seconds_between(t_contacts, t_end);
+  stats.contact_seconds += seconds_between(t_start, t_contacts);
+  stats.bond_seconds += seconds_between(t_contacts, t_bonds);  // with a chain's elimination when fused with it
+  stats.solve_seconds += seconds_between(t_bonds, t_end);
 }
 
 bool OverdampedRodSolver::newton_correction(const OverdampedRod& rod, const RodDrag& drag,

@@ -26,7 +26,12 @@ void FixRodBonds::set_orientation(int i, const Eigen::Quaterniond &q) { store_qu
 void FixRodBonds::rest_states(int i, std::vector<GatheredBond> &out) const {
   out.clear();
   const BondRestRecord *rec = records(i);
-  for (int r = 0; r < max_bonds_per_sphere; r++) {
+  // Each record kept matches a distinct bond of the topology (one record
+  // per partner), so once the sphere's bonds are all found the remaining
+  // slots hold only broken bonds' records: not reading them spares up to 7
+  // cache lines per sphere and step (the slots fill from the first).
+  const int bonds = atom->num_bond[i];
+  for (int r = 0; r < max_bonds_per_sphere && static_cast<int>(out.size()) < bonds; r++) {
     if (rec[r].partner_tag == 0.0) continue;
     // Only bonds that are still in the topology.
     bool present = false;

@@ -56,6 +56,9 @@ class RodGather : protected Pointers {
   std::vector<int> rod_ids(int groupbit);
 
  private:
+  void gather_serial(int groupbit, const RodBondRecords *bonds);
+  void size_rods();  // rods sized to fill_'s counts (which are reset to 0)
+  void sort_rods();
   // Kept between gathers by an owner that gathers every step (fix rod/implicit).
   std::vector<double> send_, received_;
   std::vector<int> counts_, displs_;

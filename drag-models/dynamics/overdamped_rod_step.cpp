@@ -486,7 +486,7 @@ void OverdampedRodSolver::Workspace::eliminate_banded(int k, int n) {
   SmallBlockLu<6>& block_lu = block_lus[k];
   block_lu.compute(diagonal[k]);
   block_lu.solve_in_place(y);
-  if (k + 1 < n) block_lu.solve_in_place(upper[k]);
+  if (k + 1 < n) block_lu.solve_block_in_place(upper[k]);
 }
 
 void OverdampedRodSolver::Workspace::back_substitute_banded(int n) {

@@ -219,14 +219,7 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
   }
   Eigen::SparseMatrix<double> a(n, n);
   a.setFromTriplets(t.begin(), t.end());
-  auto lu = std::make_shared<Factorisation>();
-  // Fill-reducing ordering: on uniform windows COLAMD, 40 % faster than
-  // KLU's default AMD where the pore cylinders cut them (0.61 vs 1.02 s,
-  // 14454 unknowns), the same on wall-free ones; on graded windows AMD,
-  // 1.4-3x faster than COLAMD on every window measured (flow/README.md).
-  lu->kluCommon().ordering = g.graded() ? 0 : 1;
-  lu->compute(a);
-  if (lu->info() != Eigen::Success) throw std::runtime_error("BrinkmanWindow: sparse LU factorisation failed");
+  auto lu = std::make_shared<const Factorisation>(a);
   lu_ = std::move(lu);
   pressure_unknown_ = std::move(pressure);
 }

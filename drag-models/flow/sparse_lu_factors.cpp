@@ -1,0 +1,108 @@
+#include "flow/sparse_lu_factors.h"
+
+#include <umfpack.h>
+
+#include <algorithm>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace hsrod {
+
+namespace {
+// Frees UMFPACK's symbolic and numeric objects on every path.
+struct UmfpackObjects {
+  void* symbolic = nullptr;
+  void* numeric = nullptr;
+  ~UmfpackObjects() {
+    if (numeric) umfpack_di_free_numeric(&numeric);
+    if (symbolic) umfpack_di_free_symbolic(&symbolic);
+  }
+};
+
+// Columns solved together: a block of B's rows fits a cache line or two.
+constexpr int kBlock = 16;
+}  // namespace
+
+SparseLuFactors::SparseLuFactors(const Eigen::SparseMatrix<double>& matrix) : n_(static_cast<int>(matrix.rows())) {
+  if (matrix.rows() != matrix.cols() || n_ == 0) throw std::invalid_argument("SparseLuFactors: need a square matrix");
+  Eigen::SparseMatrix<double> a = matrix;
+  a.makeCompressed();
+  double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
+  umfpack_di_defaults(control);
+  UmfpackObjects objects;
+  int status = umfpack_di_symbolic(n_, n_, a.outerIndexPtr(), a.innerIndexPtr(), a.valuePtr(), &objects.symbolic,
+                                   control, info);
+  if (status == UMFPACK_OK)
+    status = umfpack_di_numeric(a.outerIndexPtr(), a.innerIndexPtr(), a.valuePtr(), objects.symbolic,
+                                &objects.numeric, control, info);
+  if (status != UMFPACK_OK)  // includes UMFPACK_WARNING_singular_matrix
+    throw std::runtime_error("SparseLuFactors: UMFPACK factorisation failed (status " + std::to_string(status) + ")");
+  int lnz = 0, unz = 0, n_row = 0, n_col = 0, nz_udiag = 0;
+  umfpack_di_get_lunz(&lnz, &unz, &n_row, &n_col, &nz_udiag, objects.numeric);
+  l_start_.resize(n_ + 1);
+  l_column_.resize(lnz);
+  l_values_.resize(lnz);
+  u_start_.resize(n_ + 1);
+  u_row_.resize(unz);
+  u_values_.resize(unz);
+  row_order_.resize(n_);
+  column_order_.resize(n_);
+  row_scale_.resize(n_);
+  int do_recip = 0;
+  status = umfpack_di_get_numeric(l_start_.data(), l_column_.data(), l_values_.data(), u_start_.data(), u_row_.data(),
+                                  u_values_.data(), row_order_.data(), column_order_.data(), nullptr, &do_recip,
+                                  row_scale_.data(), objects.numeric);
+  if (status != UMFPACK_OK)
+    throw std::runtime_error("SparseLuFactors: UMFPACK could not return the factors (status " + std::to_string(status) + ")");
+  if (!do_recip)
+    for (double& r : row_scale_) r = 1.0 / r;
+  for (int j = 0; j < n_; ++j)  // the solve divides by U's diagonal, the last entry of each column
+    if (u_start_[j + 1] == u_start_[j] || u_row_[u_start_[j + 1] - 1] != j || u_values_[u_start_[j + 1] - 1] == 0.0)
+      throw std::runtime_error("SparseLuFactors: singular matrix");
+}
+
+Eigen::MatrixXd SparseLuFactors::solve(const Eigen::MatrixXd& rhs) const {
+  if (rhs.rows() != n_) throw std::invalid_argument("SparseLuFactors::solve: wrong number of rows");
+  Eigen::MatrixXd x(n_, rhs.cols());
+  // Row-major work block: the kBlock values of one unknown are contiguous.
+  std::vector<double> y(static_cast<std::size_t>(n_) * kBlock);
+  for (Eigen::Index first = 0; first < rhs.cols(); first += kBlock) {
+    const int m = static_cast<int>(std::min<Eigen::Index>(kBlock, rhs.cols() - first));
+    // y = P R b
+    for (int k = 0; k < n_; ++k) {
+      const int i = row_order_[k];
+      double* yk = &y[static_cast<std::size_t>(k) * kBlock];
+      for (int c = 0; c < m; ++c) yk[c] = row_scale_[i] * rhs(i, first + c);
+    }
+    // L y' = y (rows of L: gather from earlier unknowns; unit diagonal last)
+    for (int k = 0; k < n_; ++k) {
+      double* yk = &y[static_cast<std::size_t>(k) * kBlock];
+      for (int p = l_start_[k]; p < l_start_[k + 1] - 1; ++p) {
+        const double l = l_values_[p];
+        const double* yj = &y[static_cast<std::size_t>(l_column_[p]) * kBlock];
+        for (int c = 0; c < m; ++c) yk[c] -= l * yj[c];
+      }
+    }
+    // U z = y' (columns of U: scatter into earlier unknowns; diagonal last)
+    for (int j = n_ - 1; j >= 0; --j) {
+      double* yj = &y[static_cast<std::size_t>(j) * kBlock];
+      const int last = u_start_[j + 1] - 1;
+      const double inverse = 1.0 / u_values_[last];
+      for (int c = 0; c < m; ++c) yj[c] *= inverse;
+      for (int p = u_start_[j]; p < last; ++p) {
+        const double u = u_values_[p];
+        double* yi = &y[static_cast<std::size_t>(u_row_[p]) * kBlock];
+        for (int c = 0; c < m; ++c) yi[c] -= u * yj[c];
+      }
+    }
+    // x = Q z
+    for (int k = 0; k < n_; ++k) {
+      const double* yk = &y[static_cast<std::size_t>(k) * kBlock];
+      for (int c = 0; c < m; ++c) x(column_order_[k], first + c) = yk[c];
+    }
+  }
+  return x;
+}
+
+}  // namespace hsrod

@@ -25,6 +25,37 @@ double peskin_kernel(double r) {
   if (r < 2.0) return (5.0 - 2.0 * r - std::sqrt(std::max(0.0, -7.0 + 12.0 * r - 4.0 * r * r))) / 8.0;
   return 0.0;
 }
+
+// Faces beyond `start` [m] along one direction (sign +-1), cells growing by
+// `ratio` from h, up to `distance` [m] (the last face exactly there; a last
+// cell smaller than half its neighbour is merged into it). Offsets from
+// start, increasing in magnitude.
+std::vector<double> graded_offsets(double distance, double h, double ratio) {
+  std::vector<double> offsets;
+  double size = h, at = 0.0;
+  while (at < distance - 1e-9 * h) {
+    size *= ratio;
+    at += size;
+    offsets.push_back(std::min(at, distance));
+  }
+  const std::size_t k = offsets.size();
+  if (k >= 2 && offsets[k - 1] - offsets[k - 2] < 0.5 * (offsets[k - 2] - (k >= 3 ? offsets[k - 3] : 0.0))) {
+    offsets.erase(offsets.end() - 2);
+  }
+  return offsets;
+}
+
+// Faces of one axis: `fine` uniform cells of size h from `first`, then the
+// graded cells out to `below` [m] before and `above` [m] after them.
+std::vector<double> graded_axis(double first, int fine, double h, double below, double above, double ratio) {
+  std::vector<double> faces;
+  const std::vector<double> lower = graded_offsets(below, h, ratio), upper = graded_offsets(above, h, ratio);
+  for (auto it = lower.rbegin(); it != lower.rend(); ++it) faces.push_back(first - *it);
+  for (int i = 0; i <= fine; ++i) faces.push_back(first + i * h);
+  const double last = first + fine * h;
+  for (double offset : upper) faces.push_back(last + offset);
+  return faces;
+}
 }  // namespace
 
 TwoWayWindowModel::TwoWayWindowModel(const HydrodynamicParameters& p, const ConfinementTable& table,
@@ -36,13 +67,25 @@ TwoWayWindowModel::TwoWayWindowModel(const HydrodynamicParameters& p, const Conf
   if (options_.update_distance < 0.0) throw std::invalid_argument("twoway: update distance must be >= 0 m");
   if (options_.update_every < 0) throw std::invalid_argument("twoway: update interval must be >= 0 steps");
   if (options_.fine_margin < 0.0) throw std::invalid_argument("twoway: window fine margin must be >= 0 m");
-  if (!(options_.grading > 1.0) || options_.grading > 2.0)
+  if (options_.grading != 0.0 && (!(options_.grading > 1.0) || options_.grading > 2.0))
     throw std::invalid_argument("twoway: window grading must be in (1, 2]");
   if (options_.margin > 0.0 && options_.fine_margin > options_.margin)
     throw std::invalid_argument("twoway: window fine margin must not exceed the window margin");
   const double d = p.sphere_diameter;
   if (options_.update_distance == 0.0) options_.update_distance = 0.5 * d;
   spacing_ = d / options_.cells_per_diameter;
+  if (options_.reflection_cells_per_diameter == 0.0)
+    options_.reflection_cells_per_diameter = std::min(kReflectionCellsPerDiameter, options_.cells_per_diameter);
+  if (!(options_.reflection_cells_per_diameter >= 1.0) ||
+      options_.reflection_cells_per_diameter > options_.cells_per_diameter)
+    throw std::invalid_argument("twoway: reflection cells per diameter must be in [1, cells per diameter]");
+  window_spacing_ = d / options_.reflection_cells_per_diameter;
+  if (options_.grading == 0.0) options_.grading = two_scales() ? kTwoScaleGrading : kOneScaleGrading;
+  if (two_scales()) {
+    near_reach_ = kNearReach * d;
+    fine_table_ = free_lattice_table(spacing_, kernel_width());
+    window_table_ = free_lattice_table(window_spacing_, window_kernel_width());
+  }
   obstruction_ = LocalDragBase::obstruction_friction();
   film_friction_ = sphere_friction_ - obstruction_;
   free_self_mobility_ = measure_free_self_mobility();
@@ -61,7 +104,7 @@ double TwoWayWindowModel::margin_for(double rod_extent) const {
 // far wider than the window), on the window the model places around a lone
 // sphere, averaged over sub-cell positions and the two in-plane directions.
 double TwoWayWindowModel::measure_free_self_mobility() const {
-  const double h = spacing_, r = footprint_radius();
+  const double h = window_spacing_, r = window_footprint_radius();
   const double half = margin_for(2.0 * r) + r;
   const double side = 2.0 * h * std::ceil(200.0 * half / h);  // planform corner on the lattice
   const ChannelGeometry open(side, side, parameters_.gap_height, -0.5 * side, -0.5 * side);
@@ -72,22 +115,46 @@ double TwoWayWindowModel::measure_free_self_mobility() const {
   int samples = 0;
   for (double ox : {0.0, 0.25, 0.5})
     for (double oy : {0.0, 0.25, 0.5}) {
-      const Footprint f = footprint(window, Eigen::Vector3d(ox * h, oy * h, 0.0));
-      for (int a = 0; a < 2; ++a) {
-        Eigen::MatrixXd force = Eigen::MatrixXd::Zero(window.unknowns(), 1);
-        for (std::size_t k = 0; k < f.nodes[a].size(); ++k) force(f.nodes[a][k], 0) = f.weights[a][k];
-        const Eigen::MatrixXd u = window.solve(force);
-        for (std::size_t k = 0; k < f.nodes[a].size(); ++k) sum += f.weights[a][k] * u(f.nodes[a][k], 0);
-        ++samples;
-      }
+      RodGeometry sphere;
+      sphere.sphere_diameter = parameters_.sphere_diameter;
+      sphere.positions.push_back(Eigen::Vector3d(ox * spacing_, oy * spacing_, 0.0));
+      const Eigen::MatrixXd m = footprint_mobility(sphere, open, window);
+      sum += m(0, 0) + m(1, 1);
+      samples += 2;
     }
   return sum / samples;
+}
+
+// Green's table of a free lattice of cells h [m] for footprints of kernel
+// width w [m]: a wall-free window, uniform over the pairs' reach plus a
+// footprint on each side and graded out to the model's margin beyond it.
+std::shared_ptr<const LatticeGreenTable> TwoWayWindowModel::free_lattice_table(double h, double w) const {
+  const double reach = near_reach_ + 4.0 * std::sqrt(2.0) * w + h;
+  const int cells = static_cast<int>(std::ceil(reach / h)) + 2;
+  const double margin = margin_for(2.0 * reach);
+  const double side = 4.0 * (cells * h + margin);
+  const ChannelGeometry open(side, side, parameters_.gap_height, -0.5 * side, -0.5 * side);
+  WindowLattice lattice;
+  lattice.h = h;
+  lattice.x_faces = graded_axis(-cells * h, 2 * cells, h, margin, margin, options_.grading);
+  lattice.y_faces = lattice.x_faces;
+  lattice.nx = lattice.ny = static_cast<int>(lattice.x_faces.size()) - 1;
+  lattice.x0 = lattice.y0 = lattice.x_faces.front();
+  const BrinkmanWindow window(open, lattice, parameters_.viscosity);
+  return std::make_shared<const LatticeGreenTable>(window, w, reach);
+}
+
+double TwoWayWindowModel::near_weight(double distance) const {
+  const double t = (distance - 0.5 * near_reach_) / (0.5 * near_reach_);
+  if (t <= 0.0) return 1.0;
+  if (t >= 1.0) return 0.0;
+  return 1.0 - t * t * (3.0 - 2.0 * t);  // smoothstep
 }
 
 TwoWayWindowModel::Footprint TwoWayWindowModel::footprint(const BrinkmanWindow& window,
                                                           const Eigen::Vector3d& centre) const {
   Footprint f;
-  const double w = kernel_width();
+  const double w = window_kernel_width();
   const Eigen::Vector2d c = centre.head<2>();
   for (int a = 0; a < 2; ++a) {
     double total = 0.0;
@@ -136,38 +203,6 @@ bool TwoWayWindowModel::near_side_walls(const WindowLattice& g, const ChannelGeo
   return g.y0 - 2.0 * g.dy(0) <= geometry.y_lo() || g.y1() + 2.0 * g.dy(g.ny - 1) >= geometry.y_hi();
 }
 
-namespace {
-// Faces beyond `start` [m] along one direction (sign +-1), cells growing by
-// `ratio` from h, up to `distance` [m] (the last face exactly there; a last
-// cell smaller than half its neighbour is merged into it). Offsets from
-// start, increasing in magnitude.
-std::vector<double> graded_offsets(double distance, double h, double ratio) {
-  std::vector<double> offsets;
-  double size = h, at = 0.0;
-  while (at < distance - 1e-9 * h) {
-    size *= ratio;
-    at += size;
-    offsets.push_back(std::min(at, distance));
-  }
-  const std::size_t k = offsets.size();
-  if (k >= 2 && offsets[k - 1] - offsets[k - 2] < 0.5 * (offsets[k - 2] - (k >= 3 ? offsets[k - 3] : 0.0))) {
-    offsets.erase(offsets.end() - 2);
-  }
-  return offsets;
-}
-
-// Faces of one axis: `fine` uniform cells of size h from `first`, then the
-// graded cells out to `below` [m] before and `above` [m] after them.
-std::vector<double> graded_axis(double first, int fine, double h, double below, double above, double ratio) {
-  std::vector<double> faces;
-  const std::vector<double> lower = graded_offsets(below, h, ratio), upper = graded_offsets(above, h, ratio);
-  for (auto it = lower.rbegin(); it != lower.rend(); ++it) faces.push_back(first - *it);
-  for (int i = 0; i <= fine; ++i) faces.push_back(first + i * h);
-  const double last = first + fine * h;
-  for (double offset : upper) faces.push_back(last + offset);
-  return faces;
-}
-}  // namespace
 
 double TwoWayWindowModel::fine_margin_for(double rod_extent) const {
   if (options_.fine_margin > 0.0) return std::min(options_.fine_margin, margin_for(rod_extent));
@@ -177,7 +212,7 @@ double TwoWayWindowModel::fine_margin_for(double rod_extent) const {
 
 WindowLattice TwoWayWindowModel::window_lattice(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
                                                 const ChannelGeometry& geometry, const Eigen::Vector2i& travel) const {
-  const double r = footprint_radius(), h = spacing_;
+  const double r = window_footprint_radius(), h = window_spacing_;
   const double extent = (hi - lo).maxCoeff() + 2.0 * r;
   const double reach = fine_margin_for(extent) + r, outer = margin_for(extent) + r;
   // Fine zone anchored at the planform corner, so that windows placed at
@@ -303,7 +338,7 @@ bool TwoWayWindowModel::window_holds(const RodGeometry& rod, const ChannelGeomet
     lo = lo.cwiseMin(x.head<2>());
     hi = hi.cwiseMax(x.head<2>());
   }
-  const double r = footprint_radius(), h = spacing_;
+  const double r = window_footprint_radius(), h = window_spacing_;
   const double keep = 0.5 * fine_margin_for((hi - lo).maxCoeff() + 2.0 * r) + r;
   Eigen::Vector2d zone_lo, zone_hi;
   fine_zone(window.lattice(), zone_lo, zone_hi);
@@ -313,10 +348,8 @@ bool TwoWayWindowModel::window_holds(const RodGeometry& rod, const ChannelGeomet
          (upper_wall || hi.y() + keep <= zone_hi.y());
 }
 
-// R_o = (I / zeta_o + c (M - m_free I))^-1 from the window's footprint mobility M.
-void TwoWayWindowModel::update_resistance(const RodGeometry& rod, RodState& state,
-                                          TwoWayWindowStatistics& stats) const {
-  const BrinkmanWindow& window = *state.window;
+Eigen::MatrixXd TwoWayWindowModel::footprint_mobility(const RodGeometry& rod, const ChannelGeometry& geometry,
+                                                      const BrinkmanWindow& window) const {
   const int n = rod.size();
   std::vector<Footprint> prints;
   prints.reserve(n);
@@ -326,18 +359,11 @@ void TwoWayWindowModel::update_resistance(const RodGeometry& rod, RodState& stat
     for (int a = 0; a < 2; ++a)
       for (std::size_t k = 0; k < prints[i].nodes[a].size(); ++k)
         forces(prints[i].nodes[a][k], 2 * i + a) = prints[i].weights[a][k];
-  const auto start = std::chrono::steady_clock::now();
   const Eigen::MatrixXd velocity = window.solve(forces);
-  stats.solve_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Eigen::MatrixXd mobility(2 * n, 2 * n);
   for (int i = 0; i < n; ++i)
     for (int a = 0; a < 2; ++a) {
       const int row = 2 * i + a;
-      if (prints[i].nodes[a].empty()) {  // footprint off the grid: isolated sphere
-        mobility.row(row).setZero();
-        mobility(row, row) = free_self_mobility_;
-        continue;
-      }
       for (int col = 0; col < 2 * n; ++col) {
         double m = 0.0;
         for (std::size_t k = 0; k < prints[i].nodes[a].size(); ++k)
@@ -345,6 +371,43 @@ void TwoWayWindowModel::update_resistance(const RodGeometry& rod, RodState& stat
         mobility(row, col) = m;
       }
     }
+  if (two_scales()) {
+    // The fine lattice's free-space mobility replaces the window lattice's
+    // between nearby footprints (each footprint with itself and with its
+    // neighbours within the near reach); what the window adds to its own
+    // free-space mobility (the walls' reflection, the window's edges, the
+    // far field) is kept.
+    const Eigen::Vector2d anchor(geometry.x_lo(), geometry.y_lo());
+    std::vector<LatticeFootprint> fine, coarse;
+    for (const auto& x : rod.positions) {
+      fine.push_back(fine_table_->footprint(x, anchor));
+      coarse.push_back(window_table_->footprint(x, anchor));
+    }
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const double weight = near_weight((rod.positions[i] - rod.positions[j]).head<2>().norm());
+        if (weight > 0.0)
+          mobility.block<2, 2>(2 * i, 2 * j) +=
+              weight * (fine_table_->pair(fine[i], fine[j]) - window_table_->pair(coarse[i], coarse[j]));
+      }
+  }
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < 2; ++a)
+      if (prints[i].nodes[a].empty()) {  // footprint off the grid: isolated sphere
+        const int row = 2 * i + a;
+        mobility.row(row).setZero();
+        mobility(row, row) = free_self_mobility_;
+      }
+  return mobility;
+}
+
+// R_o = (I / zeta_o + c (M - m_free I))^-1 from the footprint mobility M.
+void TwoWayWindowModel::update_resistance(const RodGeometry& rod, const ChannelGeometry& geometry, RodState& state,
+                                          TwoWayWindowStatistics& stats) const {
+  const int n = rod.size();
+  const auto start = std::chrono::steady_clock::now();
+  Eigen::MatrixXd mobility = footprint_mobility(rod, geometry, *state.window);
+  stats.solve_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // Reciprocity holds for the continuous problem; the wall stencils make the
   // discrete M slightly non-symmetric.
   mobility = 0.5 * (mobility + mobility.transpose()).eval();
@@ -476,7 +539,7 @@ void TwoWayWindowModel::restore_state(ModelState& base, const std::vector<double
 
 std::unique_ptr<ModelState> TwoWayWindowModel::make_state() const {
   auto state = std::make_unique<TwoWayWindowState>();
-  state->spacing = spacing_;
+  state->spacing = window_spacing_;
   return state;
 }
 
@@ -484,7 +547,7 @@ void TwoWayWindowModel::evaluate(const RodGeometry& rod, const BackgroundFlow& f
                                  ModelState* state) const {
   if (!state) {
     TwoWayWindowState fresh;
-    fresh.spacing = spacing_;
+    fresh.spacing = window_spacing_;
     evaluate_with(rod, flow, out, fresh);
     return;
   }
@@ -566,14 +629,28 @@ void TwoWayWindowModel::evaluate_with(const RodGeometry& rod, const BackgroundFl
   if (update) {
     if (!state.window || !window_holds(rod, flow.geometry(), *state.window))
       place_window(rod, flow, state, rods);
-    update_resistance(rod, state, rods.statistics);
+    update_resistance(rod, flow.geometry(), state, rods.statistics);
   } else {
     ++state.evaluations_since_update;
   }
 
   // Footprint-averaged background flow at the current positions.
   Eigen::VectorXd background(2 * n);
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; two_scales() && i < n; ++i) {
+    // On the fine lattice (the sphere's own footprint), not the window's.
+    const Eigen::Vector2d anchor(flow.geometry().x_lo(), flow.geometry().y_lo());
+    const LatticeFootprint f =
+        lattice_footprint(rod.positions[i].head<2>(), anchor, spacing_, kernel_width(), &flow.geometry());
+    for (int a = 0; a < 2; ++a) {
+      double u = f.nodes[a].empty() ? flow.velocity(rod.positions[i].x(), rod.positions[i].y())[a] : 0.0;
+      for (std::size_t k = 0; k < f.nodes[a].size(); ++k) {
+        const Eigen::Vector2d p = lattice_node_position(f.nodes[a][k], anchor, spacing_);
+        u += f.weights[a][k] * flow.velocity(p.x(), p.y())[a];
+      }
+      background[2 * i + a] = u;
+    }
+  }
+  for (int i = 0; !two_scales() && i < n; ++i) {
     const Footprint f = footprint(*state.window, rod.positions[i]);
     for (int a = 0; a < 2; ++a) {
       if (f.nodes[a].empty()) {

@@ -11,9 +11,11 @@
      mean_velocity U | flow_rate Q | reynolds Re    inflow (one required)
      model NAME|auto     a registered model (hydro/model_registry.h) or auto (default auto)
      window_cells c      twoway: grid cells per sphere diameter (default 4)
+     window_reflection_cells c  twoway: cells per diameter of the window that carries the walls' reflection,
+                         [1, window_cells] (default min(2, window_cells); window_cells: one scale)
      window_margin m     twoway: window reach beyond the rod [m] (default auto)
      window_fine m       twoway: reach of the window's fine zone beyond the rod [m] (default auto)
-     window_grading g    twoway: growth ratio of the cells beyond the fine zone, (1, 2] (default 1.2)
+     window_grading g    twoway: growth ratio of the cells beyond the fine zone, (1, 2] (default 1.2 with one scale, 1.4 with two)
      window_update s     twoway: re-solve after a sphere moved s [m] (default d/2)
      window_every k      twoway: re-solve at least every k steps (default 0: by distance only)
      tolerance t         auto: accepted relative deflection error (default 0.01)
@@ -117,6 +119,12 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
       const double cells = model.options.window.cells_per_diameter;
       if (!(cells >= 2.0 && cells <= 16.0))
         error->all(FLERR, "fix hele_shaw/drag: window_cells must be in [2, 16] cells per sphere diameter");
+    } else if (strcmp(key, "window_reflection_cells") == 0) {
+      need(1);
+      model.options.window.reflection_cells_per_diameter = number(1);
+      const double cells = model.options.window.reflection_cells_per_diameter;
+      if (!(cells >= 1.0 && cells <= 16.0))
+        error->all(FLERR, "fix hele_shaw/drag: window_reflection_cells must be in [1, window_cells] cells per sphere diameter");
     } else if (strcmp(key, "window_margin") == 0) {
       need(1);
       model.options.window.margin = positive(key, number(1), " m");
@@ -166,12 +174,14 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix hele_shaw/drag command: unknown keyword '%s' (expected channel, origin, pore, "
                     "cylinder, viscosity, fluid_density, mean_velocity, flow_rate, reynolds, model, tolerance, "
-                    "coefficients, section, inertia, timestep_check, placement_check, memory_limit, window_cells, window_margin, "
-                    "window_fine, window_grading, window_update, window_every)", key);
+                    "coefficients, section, inertia, timestep_check, placement_check, memory_limit, window_cells, "
+                    "window_reflection_cells, window_margin, window_fine, window_grading, window_update, window_every)", key);
       error->all(FLERR, msg);
     }
     iarg += 1 + values;
   }
+  if (model.options.window.reflection_cells_per_diameter > model.options.window.cells_per_diameter)
+    error->all(FLERR, "fix hele_shaw/drag: window_reflection_cells must be in [1, window_cells] cells per sphere diameter");
   if (!have_inflow)
     error->all(FLERR, "Illegal fix hele_shaw/drag command: missing inflow (mean_velocity, flow_rate or reynolds)");
   if (scene.pore_radius > 0.0 && !(scene.pore_radius < 0.5 * scene.width)) {

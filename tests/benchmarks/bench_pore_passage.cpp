@@ -8,6 +8,8 @@
 // Error reference: no resolved run exists yet for this scene, so errors are
 // against the highest reduced level (level 3) at a 10x smaller step; the
 // explicit baseline is compared with the implicit run of the same level.
+// Level-4 rows also print their difference to level 4 on one scale (the
+// level-4 default before its two-scale window; vs_one_scale_*).
 // Run: build/tests/benchmarks/bench_pore_passage --benchmark_repetitions=5
 //      --benchmark_report_aggregates_only=true  (medians of several runs)
 #include "liggghts_session.h"
@@ -91,6 +93,14 @@ void report_error(benchmark::State &state, const Outcome &got, const Outcome &re
   state.counters["err_lateral_W"] = std::fabs(got.lateral - ref.lateral);
 }
 
+// Level 4 on one scale (the whole mobility from one window of the fine
+// grid): the level-4 default before the two-scale window, for the
+// difference of the level-4 rows to it.
+const Outcome &one_scale_level4() {
+  static const Outcome ref = implicit_passage("twoway window_reflection_cells 4", 4e-6);
+  return ref;
+}
+
 void BM_ImplicitPassage(benchmark::State &state, const std::string model) {
   const double dt = 4e-6;
   reference();
@@ -98,6 +108,12 @@ void BM_ImplicitPassage(benchmark::State &state, const std::string model) {
   double substeps = 0.0;
   for (auto _ : state) got = implicit_passage(model, dt, &state, "", &substeps);
   report_error(state, got, reference());
+  if (model.rfind("twoway", 0) == 0) {
+    const Outcome &one = one_scale_level4();
+    state.counters["vs_one_scale_x_d"] = std::fabs(got.x - one.x) / kD;
+    state.counters["vs_one_scale_angle_deg"] = std::fabs(got.angle - one.angle);
+    state.counters["vs_one_scale_lateral_W"] = std::fabs(got.lateral - one.lateral);
+  }
   state.counters["steps"] = std::lround(kPassage / dt);
   state.counters["substeps"] = substeps;
   state.counters["dt_s"] = dt;
@@ -252,6 +268,7 @@ BENCHMARK_CAPTURE(BM_AdaptivePassage, level1_isotropic_adaptive, std::string("is
 BENCHMARK_CAPTURE(BM_AdaptivePassage, level2_local_adaptive, std::string("local"), 1e-2)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_ImplicitPassage, level3_nonlocal, std::string("nonlocal"))->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_ImplicitPassage, level4_twoway, std::string("twoway"))->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_ImplicitPassage, level4_twoway_one_scale, std::string("twoway window_reflection_cells 4"))->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_ImplicitPassage, level4_twoway_cells2, std::string("twoway window_cells 2"))->Unit(benchmark::kMillisecond)->Iterations(1);
 // Level 4 on a uniform window cut at 4 H/sqrt(12) = 23.1 um beyond the rod
 // (the size of the window before it was graded; not converged: rod friction

@@ -88,8 +88,9 @@ RowResponse row_response(const std::string& model_name, double beta, int n, doub
                          const ConfinementTable& table, const NearFieldCalibration& near_field) {
   const HydrodynamicParameters p = row_parameters(beta);
   std::unique_ptr<HydrodynamicModel> model;
-  if (model_name == "nonlocal") model = std::make_unique<NonlocalRodModel>(p, table, near_field.nonlocal);
-  else if (model_name == "twoway") model = std::make_unique<NearFieldTwoWayModel>(p, table, TwoWayWindowOptions{}, near_field.twoway);
+  if (model_name == "nonlocal") model = std::make_unique<NonlocalRodModel>(p, table, near_field.nonlocal.at(beta));
+  else if (model_name == "twoway")
+    model = std::make_unique<NearFieldTwoWayModel>(p, table, TwoWayWindowOptions{}, near_field.twoway.at(beta));
   else model = make_hydrodynamic_model(model_name, p, table);
   return row_response(row_loads(*model, p, n, spacing));
 }

@@ -5,6 +5,7 @@
 #include <unsupported/Eigen/NumericalDiff>
 
 #include <algorithm>
+#include <initializer_list>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -36,15 +37,44 @@ struct Residuals {
   typedef Eigen::MatrixXd JacobianType;
 
   std::vector<const NearFieldCase*> cases;
-  int m = 0;
-  int inputs() const { return 3; }
+  int m = 0, degree = 0;
+  double beta_min = 0.0, beta_max = 1.0;
+  int inputs() const { return 8 * (degree + 1); }
   int values() const { return m; }
+  NearFieldLaw law(const Eigen::VectorXd& x) const {
+    NearFieldLaw out;
+    out.active = true;
+    out.beta_min = beta_min;
+    out.beta_max = beta_max;
+    int k = 0;
+    for (auto& load : out.coefficients)
+      for (auto& parameter : load) {
+        parameter.assign(degree + 1, 0.0);
+        for (double& c : parameter) c = x(k++);
+      }
+    return out;
+  }
   int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& f) const {
-    // Outside the coupling's range (LM's trial steps may go there): a large, smooth penalty.
-    const NearFieldCoupling c{std::max(x(0), 1e-6), x(1), x(2)};
+    const NearFieldLaw l = law(x);
     int k = 0;
     for (const NearFieldCase* nc : cases) {
+      NearFieldAtBeta c = l.at(nc->resolved.beta);
+      // Outside the coupling's range (LM's trial steps may go there): clipped, with a smooth penalty below.
+      double penalty = 0.0;
+      for (NearFieldCoupling* q : {&c.friction, &c.driving})
+        for (double* v : {&q->reflection, &q->reflection_along})
+          if (std::abs(*v) > 5.0) {
+            penalty += std::pow(std::abs(*v) - 5.0, 2);
+            *v = std::copysign(5.0, *v);
+          }
+      for (NearFieldCoupling* q : {&c.friction, &c.driving})
+        for (double* v : {&q->blend_length, &q->blend_length_along})
+          if (*v > 5.0) {
+            penalty += std::pow(*v - 5.0, 2);
+            *v = 5.0;
+          }
       const RowResponse r = near_field_response(*nc, c);
+      const int k0 = k;
       for (int q = 0; q < 4; ++q) {
         const std::vector<double>& model = profile_of(r, q);
         const std::vector<double>& res = nc->profiles.at(kProfiles[q]);
@@ -53,8 +83,12 @@ struct Residuals {
         const double scale = mean * std::sqrt(double(res.size()));
         for (std::size_t i = 0; i < res.size(); ++i) f(k++) = (model[i] - res[i]) / scale;
       }
+      const ResolvedRod& s = nc->resolved;
+      f(k++) = (r.lambda_par() / s.at("lambda_par") - 1.0) / kVelocityScale * kProfileScale;
+      f(k++) = (r.lambda_perp() / s.at("lambda_perp") - 1.0) / kVelocityScale * kProfileScale;
+      f(k++) = (r.r() / s.at("r") - 1.0) / kRatioScale * kProfileScale;
+      if (penalty > 0.0) f.segment(k0, k - k0) *= 1.0 + 1e3 * penalty;
     }
-    if (x(0) < 0.0) f *= 1.0 + 1e3 * x(0) * x(0);
     return 0;
   }
 };
@@ -87,9 +121,9 @@ std::vector<NearFieldCase> near_field_cases(const std::string& level, const std:
     const HydrodynamicParameters p = row_parameters(s.beta);
     std::unique_ptr<HydrodynamicModel> model;
     // Levels 3 and 4 split a sphere's friction the same way (LocalDragBase::obstruction_friction).
-    c.obstruction_friction = NonlocalRodModel(p, table, NearFieldCoupling{}).obstruction_friction();
+    c.obstruction_friction = NonlocalRodModel(p, table, NearFieldAtBeta{}).obstruction_friction();
     if (level == "nonlocal") {
-      auto m = std::make_unique<NonlocalRodModel>(p, table, NearFieldCoupling{});
+      auto m = std::make_unique<NonlocalRodModel>(p, table, NearFieldAtBeta{});
       c.film_friction = m->film_friction();
       model = std::move(m);
     } else {
@@ -103,7 +137,11 @@ std::vector<NearFieldCase> near_field_cases(const std::string& level, const std:
   return out;
 }
 
-RowResponse near_field_response(const NearFieldCase& c, const NearFieldCoupling& coupling) {
+RowResponse near_field_response(const NearFieldCase& c, const NearFieldLaw& law) {
+  return near_field_response(c, law.at(c.resolved.beta));
+}
+
+RowResponse near_field_response(const NearFieldCase& c, const NearFieldAtBeta& coupling) {
   RowLoads loads = c.depth_averaged;
   for (int a = 0; a < 2; ++a) {
     add_near_field(loads.rod[a], loads.parameters, c.film_friction, c.obstruction_friction, coupling, loads.still[a]);
@@ -138,36 +176,69 @@ CaseErrors case_errors(const NearFieldCase& c, const RowResponse& m) {
   e.total[3] = m.D_perp() / s.at("D_perp") - 1.0;
   e.lambda[0] = m.lambda_par() / s.at("lambda_par") - 1.0;
   e.lambda[1] = m.lambda_perp() / s.at("lambda_perp") - 1.0;
+  e.ratio = m.r() / s.at("r") - 1.0;
+  e.r = m.r();
   return e;
 }
 
-NearFieldFit fit_near_field(const std::vector<NearFieldCase>& cases, const NearFieldCoupling& start) {
+NearFieldFit fit_near_field(const std::vector<NearFieldCase>& cases, const NearFieldCoupling& start, int degree) {
+  if (degree < 0 || degree > 4) throw std::invalid_argument("near-field fit: degree in beta must be 0 to 4");
+  if (!start.active()) throw std::invalid_argument("near-field fit: the start needs a blend length > 0");
   Residuals res;
   res.cases = fitted(cases);
-  for (const NearFieldCase* c : res.cases) res.m += 4 * c->resolved.n;
-  if (res.m < 3) throw std::invalid_argument("near-field fit: no fitted rows with per-sphere profiles");
+  res.degree = degree;
+  res.beta_min = 1.0;
+  res.beta_max = 0.0;
+  for (const NearFieldCase* c : res.cases) {
+    res.m += 4 * c->resolved.n + 3;
+    res.beta_min = std::min(res.beta_min, c->resolved.beta);
+    res.beta_max = std::max(res.beta_max, c->resolved.beta);
+  }
+  const int p = res.inputs();
+  if (res.m <= p) throw std::invalid_argument("near-field fit: fewer fitted profile points than parameters");
   Eigen::NumericalDiff<Residuals> num(res);
   Eigen::LevenbergMarquardt<Eigen::NumericalDiff<Residuals>> lm(num);
-  Eigen::VectorXd x(3);
-  x << start.blend_length, start.reflection, start.reflection_along;
+  lm.parameters.maxfev = 400 * (p + 1);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(p);
+  for (int load = 0; load < 2; ++load) {
+    x(load * 4 * (degree + 1)) = std::log(start.blend_length);
+    x(load * 4 * (degree + 1) + (degree + 1)) = start.reflection;
+    x(load * 4 * (degree + 1) + 2 * (degree + 1)) = start.reflection_along;
+    x(load * 4 * (degree + 1) + 3 * (degree + 1)) = std::log(start.along());
+  }
   const auto status = lm.minimize(x);
-  if (status <= 0 || !x.allFinite() || x(0) <= 0.0)
+  if (status <= 0 || !x.allFinite())
     throw std::runtime_error("near-field fit: Levenberg-Marquardt failed (status " + std::to_string(int(status)) + ")");
   NearFieldFit out;
   out.status = static_cast<int>(status);
-  out.coupling = {x(0), x(1), x(2)};
+  out.law = res.law(x);
+  out.degree = degree;
+  out.beta_min = res.beta_min;
+  out.beta_max = res.beta_max;
   out.points = res.m;
   out.rows = static_cast<int>(res.cases.size());
   Eigen::VectorXd f(res.m);
   res(x, f);
-  Eigen::MatrixXd J(res.m, 3);
+  Eigen::MatrixXd J(res.m, p);
   num.df(x, J);
   const double chi2 = f.squaredNorm();
-  out.rms_residual = std::sqrt(chi2 / res.m);
-  const Eigen::Matrix3d cov = (J.transpose() * J).inverse() * (chi2 / std::max(1, res.m - 3));
-  for (int k = 0; k < 3; ++k) out.std_error[k] = std::sqrt(std::max(0.0, cov(k, k)));
-  for (int k = 0; k < 3; ++k)
-    for (int l = 0; l < 3; ++l) out.correlation(k, l) = cov(k, l) / std::max(1e-300, out.std_error[k] * out.std_error[l]);
+  double profile_chi2 = 0.0;
+  int profile_points = 0, k = 0;
+  for (const NearFieldCase* c : res.cases) {
+    for (int i = 0; i < 4 * c->resolved.n; ++i, ++k) profile_chi2 += f(k) * f(k);
+    profile_points += 4 * c->resolved.n;
+    const RowResponse r = near_field_response(*c, out.law);
+    const ResolvedRod& s = c->resolved;
+    out.worst_fitted_velocity = std::max({out.worst_fitted_velocity, std::abs(r.lambda_par() / s.at("lambda_par") - 1.0),
+                                          std::abs(r.lambda_perp() / s.at("lambda_perp") - 1.0)});
+    out.worst_fitted_ratio = std::max(out.worst_fitted_ratio, std::abs(r.r() / s.at("r") - 1.0));
+    k += 3;
+  }
+  // Per fitted row the four profiles' squared RMS sum: the RMS over the rows' profiles.
+  out.rms_profile_residual = std::sqrt(profile_chi2 / (4.0 * out.rows));
+  const Eigen::MatrixXd cov = (J.transpose() * J).completeOrthogonalDecomposition().pseudoInverse() * (chi2 / (res.m - p));
+  out.parameters.assign(x.data(), x.data() + p);
+  for (int i = 0; i < p; ++i) out.std_error.push_back(std::sqrt(std::max(0.0, cov(i, i))));
   return out;
 }
 

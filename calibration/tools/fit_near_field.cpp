@@ -9,11 +9,16 @@
 // (one line)
 //
 // With the built-in confinement table (the fit of levels 1-2, whose sphere
-// columns levels 3-4 use). Prints, per level and resolved row, the errors of
-// the totals and the per-sphere profile RMS without and with the near field;
-// rows with role "heldout" are only predicted. The output file records the
-// rows fitted, the residual, the parameters' standard errors and the
-// held-out prediction as comments.
+// columns levels 3-4 use). Fits, per level, the near-field law of
+// hydro/near_field_coupling.h (friction and held load each with its own
+// blend length and reflections, polynomials of degree --degree in beta;
+// calibration/core/near_field_fit.h) to the per-sphere profiles and the
+// free velocities and r of every fitted row. Prints, per level and resolved
+// row, the errors of the totals, the per-sphere profile RMS, the free
+// velocities and r without and with the near field; rows with role
+// "heldout" are only predicted. The output file records the rows fitted,
+// the residual, the parameters with their standard errors and the held-out
+// prediction as comments.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -36,11 +41,11 @@ std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 
 
 // Per-row lines (before -> after) and the worst held-out errors.
 std::string report(const std::string& level, const std::vector<NearFieldCase>& cases,
-                   const hsrod::NearFieldCoupling& fit, double& worst_heldout_total, double& worst_heldout_rms) {
+                   const hsrod::NearFieldLaw& fit, double& worst_heldout_total, double& worst_heldout_rms) {
   std::ostringstream out;
   worst_heldout_total = worst_heldout_rms = 0.0;
   for (const NearFieldCase& c : cases) {
-    const CaseErrors before = case_errors(c, near_field_response(c, hsrod::NearFieldCoupling{}));
+    const CaseErrors before = case_errors(c, near_field_response(c, hsrod::NearFieldAtBeta{}));
     const CaseErrors after = case_errors(c, near_field_response(c, fit));
     out << level << " beta " << fmt("%.2f", c.resolved.beta) << " n " << c.resolved.n << " (" << c.resolved.role
         << "): totals R_par/R_perp/D_par/D_perp "
@@ -49,6 +54,7 @@ std::string report(const std::string& level, const std::vector<NearFieldCase>& c
         << fmt(" (before worst %.1f %%), profile RMS worst %.1f %% (before %.1f %%), free velocity %+.2f/%+.2f %%",
                100 * before.worst_total(), 100 * after.worst_profile(), 100 * before.worst_profile(),
                100 * after.lambda[0], 100 * after.lambda[1])
+        << fmt(", r %+.2f %% (r - 1 %.4f, resolved %.4f)", 100 * after.ratio, after.r - 1.0, c.resolved.at("r") - 1.0)
         << "\n";
     if (std::getenv("HSROD_NEAR_FIELD_VERBOSE")) {  // per-sphere profiles, resolved | model
       const RowResponse m = near_field_response(c, fit);
@@ -78,6 +84,8 @@ int main(int argc, char** argv) {
   app.add_option("profiles", profiles_path, "resolved_campaign_profiles.csv")->required()->check(CLI::ExistingFile);
   app.add_option("output", out_path, "near-field coupling file to write")->required();
   app.add_option("--write-cpp", cpp_path, "also write the compiled-in copy (near_field_coupling_fit.cpp)");
+  int degree = 2;  // the shipped fit (calibration/README.md: degree 1 leaves 1.5 % in the free velocities)
+  app.add_option("--degree", degree, "degree of each parameter's polynomial in beta (0: constant)")->check(CLI::Range(0, 4));
   CLI11_PARSE(app, argc, argv);
   try {
     const auto series = read_resolved_series(series_path);
@@ -86,56 +94,86 @@ int main(int argc, char** argv) {
     const std::string series_name = series_path.substr(series_path.rfind('/') + 1);
     hsrod::NearFieldCalibration result;
     result.source = "hsrod_fit_near_field on " + series_name +
-                    " (resolved rodIbFoam rigid rods, per-sphere profiles, finest mesh), table: " + table.source();
-    std::ostringstream provenance;
+                    " (resolved rodIbFoam rigid rows, per-sphere profiles and free velocities, finest mesh), degree " +
+                    std::to_string(degree) + " in beta, table: " + table.source();
+    std::ostringstream provenance, law_lines;
+    const char* const loads[2] = {"friction", "driving"};
+    const char* const parameters[4] = {"ln_blend_length", "reflection", "reflection_along", "ln_blend_length_along"};
+    double beta_min = 1.0, beta_max = 0.0;
     for (const std::string level : {"nonlocal", "twoway"}) {
       const auto cases = near_field_cases(level, series, profiles, table);
-      const NearFieldFit fit = fit_near_field(cases, {0.3, 0.5, 0.0});
-      (level == "nonlocal" ? result.nonlocal : result.twoway) = fit.coupling;
+      const NearFieldFit fit = fit_near_field(cases, {0.33, 0.15, 0.0}, degree);
+      (level == "nonlocal" ? result.nonlocal : result.twoway) = fit.law;
+      beta_min = fit.beta_min;
+      beta_max = fit.beta_max;
       double ho_total = 0, ho_rms = 0;
-      const std::string rows = report(level, cases, fit.coupling, ho_total, ho_rms);
+      const std::string rows = report(level, cases, fit.law, ho_total, ho_rms);
       std::printf("%s", rows.c_str());
-      provenance << "# " << level << ": blend_length " << fmt("%.4f +- %.4f", fit.coupling.blend_length, fit.std_error[0])
-                 << ", reflection " << fmt("%.4f +- %.4f", fit.coupling.reflection, fit.std_error[1])
-                 << ", reflection_along " << fmt("%.4f +- %.4f", fit.coupling.reflection_along, fit.std_error[2])
-                 << fmt(" (correlations %.2f %.2f %.2f); %.0f fitted rows, %.0f profile points, RMS residual %.4f of the "
-                        "profile mean;",
-                        fit.correlation(0, 1), fit.correlation(0, 2), fit.correlation(1, 2), fit.rows, fit.points,
-                        fit.rms_residual)
-                 << fmt(" held out: worst total %.1f %%, worst profile RMS %.1f %%\n", 100 * ho_total, 100 * ho_rms);
+      provenance << "# " << level
+                 << fmt(": %.0f fitted rows (beta %.2f-%.2f), %.0f residuals, %.0f parameters; RMS profile error %.4f of the "
+                        "profile mean; ",
+                        fit.rows, fit.beta_min, fit.beta_max, fit.points, fit.parameters.size(), fit.rms_profile_residual)
+                 << fmt("fitted rows: worst free velocity %.2f %%, worst r %.2f %%; held out: worst total %.1f %%, worst "
+                        "profile RMS %.1f %%\n",
+                        100 * fit.worst_fitted_velocity, 100 * fit.worst_fitted_ratio, 100 * ho_total, 100 * ho_rms);
+      int k = 0;
+      for (int l = 0; l < 2; ++l)
+        for (int q = 0; q < 4; ++q) {
+          provenance << "#   " << level << " " << loads[l] << " " << parameters[q] << ":";
+          law_lines << level << " " << loads[l] << " " << parameters[q];
+          for (int j = 0; j <= degree; ++j, ++k) {
+            provenance << fmt(" %.4f +- %.4f", fit.parameters[k], fit.std_error[k]);
+            char buf[64];
+            std::snprintf(buf, sizeof buf, " %.10g", fit.parameters[k]);
+            law_lines << buf;
+          }
+          provenance << "\n";
+          law_lines << "\n";
+        }
       std::istringstream lines(rows);
       for (std::string l; std::getline(lines, l);) provenance << "#   " << l << "\n";
     }
     std::printf("%s", provenance.str().c_str());
     std::ofstream f(out_path);
-    f.precision(10);
-    f << "hsrod-near-field-coupling 1\nsource " << result.source << "\n"
+    f << "hsrod-near-field-coupling 2\nsource " << result.source << "\n"
       << "# Near-field coupling of levels 3-4 (drag-models/hydro/near_field_coupling.h), written by\n"
       << "#   build/hsrod_fit_near_field " << series_name << " " << profiles_path.substr(profiles_path.rfind('/') + 1)
-      << " near_field_coupling.txt --write-cpp drag-models/hydro/near_field_coupling_fit.cpp\n"
-      << "# Fitted: rows with role fit (n > 1), residual (model - resolved) / (profile mean sqrt(n)) per sphere;\n"
+      << " near_field_coupling.txt --degree " << degree << " --write-cpp drag-models/hydro/near_field_coupling_fit.cpp\n"
+      << "# Fitted: rows with role fit (n > 1): per-sphere residual (model - resolved) / (profile mean sqrt(n)),\n"
+      << "# free velocities along/across and r (relative error x " << kProfileScale / kVelocityScale << " and x "
+      << kProfileScale / kRatioScale << ");\n"
       << "# standard errors from s^2 (J^T J)^-1. Per row: errors with the fit (before: near field off).\n"
-      << provenance.str()
-      << "# model blend_length(kappa, over H) reflection(alpha) reflection_along(alpha_e) (over Faxen's 1.004/(3 pi mu H))\n"
-      << "nonlocal " << result.nonlocal.blend_length << " " << result.nonlocal.reflection << " "
-      << result.nonlocal.reflection_along << "\n"
-      << "twoway " << result.twoway.blend_length << " " << result.twoway.reflection << " "
-      << result.twoway.reflection_along << "\n";
+      << provenance.str() << fmt("beta_range %.4g %.4g\n", beta_min, beta_max)
+      << "# model load parameter c0 c1 ...: polynomial in (beta - 0.3); blend length kappa = exp(...) over H,\n"
+      << "# reflections over Faxen's 1.004/(3 pi mu H)\n"
+      << law_lines.str();
     std::printf("wrote %s\n", out_path.c_str());
     if (!cpp_path.empty()) {
       std::ofstream c(cpp_path);
-      c.precision(10);
       c << "// The shipped near-field fit (hydro/near_field_coupling.h), written by\n"
            "//   build/hsrod_fit_near_field (calibration/tools/fit_near_field.cpp)\n"
            "// Do not edit: equals calibration/data/near_field_coupling.txt (test\n"
-           "// NearFieldCoupling.BuiltInIsTheShippedFile).\n"
+           "// calibration_NearFieldLevels.BuiltInNearFieldIsTheShippedFit).\n"
            "#include \"hydro/near_field_coupling.h\"\n\nnamespace hsrod {\n\n"
-           "NearFieldCalibration NearFieldCalibration::built_in() {\n  NearFieldCalibration c;\n"
-        << "  c.nonlocal = {" << result.nonlocal.blend_length << ", " << result.nonlocal.reflection << ", "
-        << result.nonlocal.reflection_along << "};\n"
-        << "  c.twoway = {" << result.twoway.blend_length << ", " << result.twoway.reflection << ", "
-        << result.twoway.reflection_along << "};\n"
-        << "  c.source = \"" << result.source << "\";\n  return c;\n}\n\n}  // namespace hsrod\n";
+           "NearFieldCalibration NearFieldCalibration::built_in() {\n  NearFieldCalibration c;\n";
+      for (const std::string level : {"nonlocal", "twoway"}) {
+        const hsrod::NearFieldLaw& law = level == "nonlocal" ? result.nonlocal : result.twoway;
+        c << "  c." << level << ".active = true;\n";
+        char buf[128];
+        std::snprintf(buf, sizeof buf, "  c.%s.beta_min = %.4g;\n  c.%s.beta_max = %.4g;\n", level.c_str(), law.beta_min,
+                      level.c_str(), law.beta_max);
+        c << buf;
+        for (int l = 0; l < 2; ++l)
+          for (int q = 0; q < 4; ++q) {
+            c << "  c." << level << ".coefficients[" << l << "][" << q << "] = {";
+            for (std::size_t j = 0; j < law.coefficients[l][q].size(); ++j) {
+              std::snprintf(buf, sizeof buf, "%s%.10g", j ? ", " : "", law.coefficients[l][q][j]);
+              c << buf;
+            }
+            c << "};  // " << loads[l] << " " << parameters[q] << "\n";
+          }
+      }
+      c << "  c.source = \"" << result.source << "\";\n  return c;\n}\n\n}  // namespace hsrod\n";
       std::printf("wrote %s\n", cpp_path.c_str());
     }
   } catch (const std::exception& e) {

@@ -15,10 +15,10 @@
 namespace hsrod {
 
 NonlocalRodModel::NonlocalRodModel(const HydrodynamicParameters& p, const ConfinementTable& table)
-    : NonlocalRodModel(p, table, NearFieldCalibration::built_in().nonlocal) {}
+    : NonlocalRodModel(p, table, NearFieldCalibration::built_in().nonlocal.at(p.sphere_diameter / p.gap_height)) {}
 
 NonlocalRodModel::NonlocalRodModel(const HydrodynamicParameters& p, const ConfinementTable& table,
-                                   const NearFieldCoupling& near_field)
+                                   const NearFieldAtBeta& near_field)
     : LocalDragBase(p, table), near_field_(near_field) {
   const std::string problem = NearFieldCalibration::range_problem(near_field);
   if (!problem.empty()) throw std::invalid_argument("nonlocal: near field: " + problem);
@@ -34,19 +34,31 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
   // within a few H, blended into the 3-D near field. z is uncoupled (its
   // block is the identity), so only the 2n x 2n in-plane part is inverted:
   // (2/3)^3 of the 3n x 3n LU's work, the same result to round-off.
-  Eigen::MatrixXd coupling = Eigen::MatrixXd::Identity(2 * n, 2 * n);
   // G(r) = G(-r) is symmetric (brinkman_green.h): one evaluation per pair
-  // fills both blocks (i,k) and (k,i).
+  // fills both blocks (i,k) and (k,i). The held load has its own near field
+  // (NearFieldAtBeta), so its coupling matrix is built beside the friction's
+  // from the same G when the two differ.
+  const bool own_driving = near_field_.driving.blend_length != near_field_.friction.blend_length ||
+                           near_field_.driving.reflection != near_field_.friction.reflection ||
+                           near_field_.driving.reflection_along != near_field_.friction.reflection_along;
+  Eigen::MatrixXd coupling = Eigen::MatrixXd::Identity(2 * n, 2 * n);
+  Eigen::MatrixXd coupling_driving;
+  if (own_driving) coupling_driving = Eigen::MatrixXd::Identity(2 * n, 2 * n);
+  const double mu = parameters_.viscosity, H = parameters_.gap_height, d = parameters_.sphere_diameter;
   for (int i = 0; i < n; ++i) {
     for (int k = i + 1; k < n; ++k) {
       const Eigen::Vector2d offset = (rod.positions[i] - rod.positions[k]).head<2>();
       if (offset.norm() <= 0.0) continue;
-      const double mu = parameters_.viscosity, H = parameters_.gap_height;
+      const Eigen::Matrix2d depth_averaged = kMidplaneFactor * brinkman_green_function(offset, mu, H);
       const Eigen::Matrix2d g =
-          zo * near_field_pair_mobility(kMidplaneFactor * brinkman_green_function(offset, mu, H), offset, mu, H,
-                                        parameters_.sphere_diameter, 1.0 / zo, near_field_);
+          zo * near_field_pair_mobility(depth_averaged, offset, mu, H, d, 1.0 / zo, near_field_.friction);
       coupling.block<2, 2>(2 * i, 2 * k) += g;
       coupling.block<2, 2>(2 * k, 2 * i) += g;
+      if (!own_driving) continue;
+      const Eigen::Matrix2d gd =
+          zo * near_field_pair_mobility(depth_averaged, offset, mu, H, d, 1.0 / zo, near_field_.driving);
+      coupling_driving.block<2, 2>(2 * i, 2 * k) += gd;
+      coupling_driving.block<2, 2>(2 * k, 2 * i) += gd;
     }
   }
   // R_o itself is an output (it enters the implicit step's matrix), so the
@@ -80,7 +92,11 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
   sample_flow(rod, flow, out);
   Eigen::VectorXd u(2 * n);
   for (int i = 0; i < n; ++i) u.segment<2>(2 * i) = out.driving_force[i].head<2>();
-  const Eigen::VectorXd driving = kMidplaneFactor * (inverse * u);
+  // In-plane driving c R_o u, or, when the held load has its own near field,
+  // c zo (I + zo M^D)^-1 u.
+  const Eigen::VectorXd driving =
+      own_driving ? Eigen::VectorXd((kMidplaneFactor * zo) * coupling_driving.partialPivLu().solve(u))
+                  : Eigen::VectorXd(kMidplaneFactor * (inverse * u));
   for (int i = 0; i < n; ++i) {
     out.driving_force[i] << driving.segment<2>(2 * i), kMidplaneFactor * (zo * out.driving_force[i].z());
     out.resistance[i] = resistance.block<3, 3>(3 * i, 3 * i);

@@ -20,7 +20,10 @@
 // Spheres closer than a few gap heights interact as in 3-D Stokes flow, not
 // through the depth-averaged G: their pair coupling c G is blended into a
 // Rotne-Prager mobility with the walls' reflection (hydro/near_field_coupling.h),
-// fitted to the resolved per-sphere loads (the built-in default).
+// fitted to the resolved per-sphere loads (the built-in default). The held
+// load has its own near field (NearFieldAtBeta): F = c R_o^D u - (zeta_f +
+// R_o) v, R_o^D = zeta_o (I + c zeta_o G^D)^-1 with G^D blended with the
+// driving's parameters.
 #pragma once
 
 #include "hydro/local_models.h"
@@ -40,7 +43,7 @@ class NonlocalRodModel : public LocalDragBase {
  public:
   NonlocalRodModel(const HydrodynamicParameters& parameters, const ConfinementTable& table);
   NonlocalRodModel(const HydrodynamicParameters& parameters, const ConfinementTable& table,
-                   const NearFieldCoupling& near_field);
+                   const NearFieldAtBeta& near_field);
   std::string name() const override { return "nonlocal"; }
   int level() const override { return 3; }
   using HydrodynamicModel::evaluate;
@@ -65,12 +68,12 @@ class NonlocalRodModel : public LocalDragBase {
 
   double film_friction() const { return film_friction_; }              // zeta_f [N s/m]
   double obstruction_friction() const { return obstruction_friction_; }  // zeta_o [N s/m]
-  const NearFieldCoupling& near_field() const { return near_field_; }
+  const NearFieldAtBeta& near_field() const { return near_field_; }
 
  private:
   double film_friction_;
   double obstruction_friction_;
-  NearFieldCoupling near_field_;
+  NearFieldAtBeta near_field_;
 };
 
 }  // namespace hsrod

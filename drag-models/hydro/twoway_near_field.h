@@ -9,9 +9,10 @@
 // into its mobility M = R_o^-1 (diagonal blocks: the sphere's own 1/zeta_o,
 // off-diagonal blocks: c times the window's mobility between footprints),
 // each pair block within a few H is blended into the 3-D near field, and
-//     R_o' = M'^-1,   driving' = R_o' M driving
+//     R_o' = M'^-1,   driving' = R_o^D' M driving
 // (the driving is c R_o <u_bg>: the same background flow seen through the
-// new coupling). A lone sphere, and pairs beyond a few blend lengths, keep
+// new coupling; R_o^D' = M^D'^-1 with M^D' blended with the driving's own
+// near-field parameters, NearFieldAtBeta). A lone sphere, and pairs beyond a few blend lengths, keep
 // the window's load exactly.
 //
 // Approximation: the window's wall reflections between two spheres within
@@ -31,20 +32,22 @@ namespace hsrod {
 // coupled, `obstruction_friction` zeta_o [N s/m] the coupled part of a lone sphere's. The in-plane components of `drag` (coupled) are replaced; z and
 // rotation are kept. No-op for a lone sphere or an inactive coupling.
 void add_near_field(const RodGeometry& rod, const HydrodynamicParameters& parameters, double film_friction,
-                    double obstruction_friction, const NearFieldCoupling& coupling, RodDrag& drag);
+                    double obstruction_friction, const NearFieldAtBeta& coupling, RodDrag& drag);
 
 // The registered `twoway` model: the window model plus the near field.
 class NearFieldTwoWayModel : public TwoWayWindowModel {
  public:
   NearFieldTwoWayModel(const HydrodynamicParameters& parameters, const ConfinementTable& table,
-                       const TwoWayWindowOptions& options = {},
-                       const NearFieldCoupling& near_field = NearFieldCalibration::built_in().twoway);
+                       const TwoWayWindowOptions& options, const NearFieldAtBeta& near_field);
+  // With the built-in near field at this beta.
+  NearFieldTwoWayModel(const HydrodynamicParameters& parameters, const ConfinementTable& table,
+                       const TwoWayWindowOptions& options = {});
   using HydrodynamicModel::evaluate;
   void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState* state) const override;
-  const NearFieldCoupling& near_field() const { return near_field_; }
+  const NearFieldAtBeta& near_field() const { return near_field_; }
 
  private:
-  NearFieldCoupling near_field_;
+  NearFieldAtBeta near_field_;
 };
 
 }  // namespace hsrod

@@ -1,33 +1,26 @@
 // Levels 3 and 4 with the near-field coupling (drag-models/hydro/
-// near_field_coupling.h, fitted by hsrod_fit_near_field) against the
-// resolved rodIbFoam campaign itself (calibration/data/resolved_campaign_
+// near_field_coupling.h, fitted by hsrod_fit_near_field: friction and held
+// load each with its own pair mobility, blend lengths along and across the
+// line of centres, every parameter quadratic in beta) against the resolved
+// rodIbFoam campaign itself (calibration/data/resolved_campaign_
 // {series,profiles}.csv: rigid rows of touching spheres at the mid-plane,
 // finest mesh), with the built-in confinement table (the fit of levels 1-2,
 // whose sphere columns levels 3-4 use):
-//  - every fitted rod (n = 2, 5, 10 at beta 0.15 and 0.3): total friction and
-//    held-in-flow load along and across the flow within 10 %, force-free
-//    velocity within 3 %, each per-sphere profile (friction and held load,
-//    along and across) within 10 % RMS of its mean magnitude;
-//  - the rod left out of the fit (7 spheres at beta 0.25) predicted within
+//  - every fitted rod (n = 2, 5, 10 at beta 0.1, 0.15, 0.2, 0.3, 0.45, 0.6,
+//    0.75): total friction and held-in-flow load along and across the flow
+//    within 10 %, each per-sphere profile (friction and held load, along and
+//    across) within 10 % RMS of its mean magnitude, force-free velocity along
+//    and across within 3 %, r = U_perp / U_par within 1 %;
+//  - the rods left out of the fit (7 spheres at beta 0.25, 10 at beta 0.5,
+//    15 at beta 0.3: betas and a length in no fitted row) predicted within
 //    the same tolerances;
 //  - the built-in near field is the shipped file calibration/data/near_field_coupling.txt.
-// Level 4 is fitted on its converged window (main c444e3c).
-//
-// Range of these claims: the near field was fitted on beta 0.15 and 0.3 and is
-// checked over beta <= 0.3 (0.2 and the held-out rods 0.25 / N = 7 and 0.3 /
-// N = 15 are predictions). NOT met, reported (session 7, after the refit of
-// levels 1-2 over beta 0.15-0.6 changed the sphere columns levels 3-4 use):
-//  - the force-free velocity along the axis is 3.2 % low at beta 0.3, N = 10
-//    and 3.6 % low at N = 15 (both levels; 2.85 % before the refit), so the
-//    velocity checks are a disabled test until the near field also fits the
-//    velocities;
-//  - the held-out N = 15 rod (beta 0.3, longer than any fitted rod) is predicted
-//    within the tolerances but for level 4's friction profile along the axis
-//    (RMS 10.4 %) and the free velocity: it is checked only in the disabled test;
-//  - above beta 0.3 levels 3-4 drift further from the resolved rods (beta 0.6,
-//    N = 10: free velocity -9.9 %, r - 1 = 0.24 against 0.03 resolved): the
-//    depth-averaged far field itself is wrong there; auto's error record
-//    carries these errors, so auto does not pick them there.
+// Measured (session 8, shipped fit): totals within 6.0 %, profile RMS within
+// 6.1 % (both the held-out N = 15 rod across), free velocity within 1.02 %,
+// r within 0.45 % (held-out N = 15), at both levels; the fit's report is in
+// the file's comments.
+// Level 4 may refuse a beta where its default window grid is too coarse for
+// the sphere (an error naming the remedy): reported, not counted.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -47,14 +40,8 @@ struct Checked {
   int rods = 0, tens = 0;
 };
 
-enum class Directions { Both, AcrossOnly, AlongOnly };
-enum class Checks { LoadsAndProfiles, FreeVelocity };
-
-constexpr double kBetaMax = 0.3 + 1e-9;  // range of the near field's claims (header)
-constexpr int kNMax = 10;                 // longest fitted rod; N = 15 is in the disabled test (header)
-
-Checked expect_level(const std::string& level, const std::string& role, Directions directions = Directions::Both,
-                     Checks checks = Checks::LoadsAndProfiles, bool include_longer = false) {
+// Every check on every row of the role (one evaluation of the level per row).
+Checked expect_level(const std::string& level, const std::string& role) {
   const auto series = read_resolved_series(kData + "resolved_campaign_series.csv");
   const auto profiles = read_resolved_profiles(kData + "resolved_campaign_profiles.csv");
   const hsrod::ConfinementTable table = hsrod::ConfinementTable::default_table();
@@ -62,23 +49,27 @@ Checked expect_level(const std::string& level, const std::string& role, Directio
   for (const NearFieldCase& c : near_field_cases(level, series, profiles, table)) {
     const ResolvedRod& s = c.resolved;
     if (s.role != role) continue;  // every spacing in the record (pairs at 2 d and 4 d when recorded)
-    if (s.beta > kBetaMax) continue;
-    if (s.n > kNMax && checks == Checks::LoadsAndProfiles && !include_longer) continue;
     // The registered model (built-in near field), not the fit's shortcut.
-    const RowResponse m = row_response(level, s.beta, s.n, s.spacing, table);
+    RowResponse m;
+    try {
+      m = row_response(level, s.beta, s.n, s.spacing, table);
+    } catch (const std::exception& e) {
+      std::printf("%s at beta %.2f n %d refuses: %s\n", level.c_str(), s.beta, s.n, e.what());
+      EXPECT_EQ(level, "twoway") << e.what();
+      EXPECT_NE(std::string(e.what()).find("refine the grid"), std::string::npos) << e.what();
+      continue;
+    }
     const CaseErrors e = case_errors(c, m);
     const std::string where = level + " beta " + std::to_string(s.beta) + " n " + std::to_string(s.n) + " (" + role + ")";
     const char* total_names[4] = {"friction along", "friction across", "held load along", "held load across"};
     const char* profile_names[4] = {"friction along", "friction across", "held load along", "held load across"};
-    for (int q = 0; q < 4 && checks == Checks::LoadsAndProfiles; ++q) {
-      const bool across = q % 2 == 1;  // quantities alternate along, across
-      if ((across && directions == Directions::AlongOnly) || (!across && directions == Directions::AcrossOnly))
-        continue;
+    for (int q = 0; q < 4; ++q) {
       EXPECT_LT(std::abs(e.total[q]), 0.10) << where << " total " << total_names[q];
       EXPECT_LT(e.profile_rms[q], 0.10) << where << " per-sphere profile RMS, " << profile_names[q];
     }
-    if (checks == Checks::FreeVelocity && directions != Directions::AcrossOnly) EXPECT_LT(std::abs(e.lambda[0]), 0.03) << where << " free velocity along";
-    if (checks == Checks::FreeVelocity && directions != Directions::AlongOnly) EXPECT_LT(std::abs(e.lambda[1]), 0.03) << where << " free velocity across";
+    EXPECT_LT(std::abs(e.lambda[0]), 0.03) << where << " free velocity along";
+    EXPECT_LT(std::abs(e.lambda[1]), 0.03) << where << " free velocity across";
+    EXPECT_LT(std::abs(e.ratio), 0.01) << where << " r = U_perp / U_par";
     std::printf("%s: totals %+.1f/%+.1f/%+.1f/%+.1f %%, profile RMS %.1f/%.1f/%.1f/%.1f %%, free velocity %+.2f/%+.2f %%, "
                 "r %.4f (resolved %.4f)\n",
                 where.c_str(), 100 * e.total[0], 100 * e.total[1], 100 * e.total[2], 100 * e.total[3],
@@ -94,48 +85,39 @@ Checked expect_level(const std::string& level, const std::string& role, Directio
 
 TEST(calibration_NearFieldLevels, Level3ReproducesTheResolvedRodsSphereBySphere) {
   const Checked c = expect_level("nonlocal", "fit");
-  EXPECT_GE(c.rods, 6) << "resolved rods of several lengths at two beta expected";
-  EXPECT_GE(c.tens, 2);
+  EXPECT_GE(c.rods, 21) << "resolved rods of 2, 5 and 10 spheres at seven beta expected";
+  EXPECT_GE(c.tens, 7);
 }
 
-TEST(calibration_NearFieldLevels, Level4ReproducesTheResolvedRodsAcrossTheFlowSphereBySphere) {
-  const Checked c = expect_level("twoway", "fit", Directions::AcrossOnly);
-  EXPECT_GE(c.rods, 6) << "resolved rods of several lengths at two beta expected";
-  EXPECT_GE(c.tens, 2);
+TEST(calibration_NearFieldLevels, Level4ReproducesTheResolvedRodsSphereBySphere) {
+  const Checked c = expect_level("twoway", "fit");
+  EXPECT_GE(c.rods, 15) << "resolved rods of 2, 5 and 10 spheres at five beta or more expected";
+  EXPECT_GE(c.tens, 5);
 }
 
-TEST(calibration_NearFieldLevels, Level4ReproducesTheResolvedRodsAlongTheAxisSphereBySphere) {
-  EXPECT_GE(expect_level("twoway", "fit", Directions::AlongOnly).rods, 6);
+TEST(calibration_NearFieldLevels, Level3PredictsTheHeldOutRods) {
+  EXPECT_GE(expect_level("nonlocal", "heldout").rods, 3) << "held-out rods: beta 0.25 N = 7, 0.5 N = 10, 0.3 N = 15";
 }
 
-TEST(calibration_NearFieldLevels, Level3PredictsTheHeldOutRod) {
-  EXPECT_GE(expect_level("nonlocal", "heldout").rods, 1) << "no held-out resolved rod with profiles in the record";
-}
-
-TEST(calibration_NearFieldLevels, Level4PredictsTheHeldOutRodAcrossTheFlow) {
-  EXPECT_GE(expect_level("twoway", "heldout", Directions::AcrossOnly).rods, 1)
-      << "no held-out resolved rod with profiles in the record";
-}
-
-TEST(calibration_NearFieldLevels, Level4PredictsTheHeldOutRodAlongTheAxis) {
-  EXPECT_GE(expect_level("twoway", "heldout", Directions::AlongOnly).rods, 1);
-}
-
-// Fails today (header): level 3's free velocity along the axis -3.19 % at beta 0.3, N = 10; -3.57 % held-out N = 15.
-TEST(calibration_NearFieldLevels, DISABLED_Levels3And4FreeVelocityWithin3Percent) {
-  expect_level("twoway", "heldout", Directions::AlongOnly, Checks::LoadsAndProfiles, true);  // N = 15: profile RMS 10.4 % along
-  expect_level("nonlocal", "fit", Directions::Both, Checks::FreeVelocity);
-  expect_level("nonlocal", "heldout", Directions::Both, Checks::FreeVelocity);
-  expect_level("twoway", "fit", Directions::Both, Checks::FreeVelocity);
-  expect_level("twoway", "heldout", Directions::Both, Checks::FreeVelocity);
+TEST(calibration_NearFieldLevels, Level4PredictsTheHeldOutRods) {
+  EXPECT_GE(expect_level("twoway", "heldout").rods, 3) << "held-out rods: beta 0.25 N = 7, 0.5 N = 10, 0.3 N = 15";
 }
 
 TEST(calibration_NearFieldLevels, BuiltInNearFieldIsTheShippedFit) {
   const auto shipped = hsrod::NearFieldCalibration::read(kData + "near_field_coupling.txt");
   const auto built_in = hsrod::NearFieldCalibration::built_in();
-  EXPECT_NEAR(built_in.nonlocal.blend_length, shipped.nonlocal.blend_length, 1e-8);
-  EXPECT_NEAR(built_in.nonlocal.reflection, shipped.nonlocal.reflection, 1e-8);
-  EXPECT_NEAR(built_in.twoway.blend_length, shipped.twoway.blend_length, 1e-8);
-  EXPECT_NEAR(built_in.twoway.reflection, shipped.twoway.reflection, 1e-8);
+  for (int level = 0; level < 2; ++level) {
+    const hsrod::NearFieldLaw& a = level == 0 ? built_in.nonlocal : built_in.twoway;
+    const hsrod::NearFieldLaw& b = level == 0 ? shipped.nonlocal : shipped.twoway;
+    EXPECT_EQ(a.active, b.active);
+    EXPECT_NEAR(a.beta_min, b.beta_min, 1e-12);
+    EXPECT_NEAR(a.beta_max, b.beta_max, 1e-12);
+    for (int load = 0; load < 2; ++load)
+      for (int q = 0; q < 4; ++q) {
+        ASSERT_EQ(a.coefficients[load][q].size(), b.coefficients[load][q].size());
+        for (std::size_t j = 0; j < a.coefficients[load][q].size(); ++j)
+          EXPECT_NEAR(a.coefficients[load][q][j], b.coefficients[load][q][j], 1e-8);
+      }
+  }
   EXPECT_EQ(built_in.source, shipped.source);
 }

@@ -91,11 +91,22 @@ TEST(RigidRodTransport, PerpendicularRodMovesFasterMarkedlyAboveHalfConfinement)
     const double perp = free_rigid_translation(*m, straight_rod(10, kD, kPi / 2), stream).velocity.x();
     return perp / par - 1.0;
   };
+  // "Markedly" measured: the resolved rodIbFoam rods (calibration/data/
+  // resolved_campaign_series.csv) give r - 1 = 0.0004 at beta 0.15 and 0.031
+  // at 0.6; level 3 (with its near field fitted over beta 0.1-0.75) must give
+  // r within 1 % of the resolved value at 0.6 and the growth by more than 10x.
+  // (Before the near field fitted the free velocities, level 3 gave 0.24 at 0.6.)
   const double weak = anisotropy(0.15), strong = anisotropy(0.6);
-  std::printf("v_perp / v_par - 1: %.4f at beta 0.15, %.4f at beta 0.6\n", weak, strong);
+  double resolved = 0.0;
+  for (const auto& s : hsrod::calib::read_resolved_series(std::string(HSROD_TEST_DATA_DIR) +
+                                                          "/../../../calibration/data/resolved_campaign_series.csv"))
+    if (std::abs(s.beta - 0.6) < 1e-9 && s.n == 10 && s.spacing == 1.0) resolved = s.at("r");
+  ASSERT_GT(resolved, 1.0) << "resolved beta 0.6 N = 10 rod missing";
+  std::printf("v_perp / v_par - 1: %.4f at beta 0.15, %.4f at beta 0.6 (resolved %.4f)\n", weak, strong, resolved - 1);
   EXPECT_GT(weak, 0.0);
   EXPECT_LT(weak, 0.02);
-  EXPECT_GT(strong, 0.1);
+  EXPECT_GT(strong, 10.0 * weak);
+  EXPECT_NEAR((1.0 + strong) / resolved, 1.0, 0.01);
 }
 
 TEST(RigidRodTransport, ChainShieldingOfTheAxialFrictionAsResolved) {

@@ -154,7 +154,7 @@ TEST(TwoWayWindowModel, RigidRodMovesAsLevel3) {
   // Level 3 without its near field (hydro/near_field_coupling.h): the point
   // Green's function against the window's depth-averaged flow.
   const auto level3 = std::make_unique<NonlocalRodModel>(HydrodynamicParameters{kMu, kD / beta, kD},
-                                                         ConfinementTable::default_table(), NearFieldCoupling{});
+                                                         ConfinementTable::default_table(), NearFieldAtBeta{});
   const UniformSlitStream stream(kD / beta);
   for (double degrees : {0.0, 45.0, 90.0}) {
     RodGeometry rod = straight_rod(10, kD, degrees * kPi / 180.0);

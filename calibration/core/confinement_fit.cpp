@@ -177,7 +177,9 @@ struct Given {
 double curve_value(CurveForm form, const double* p, int np, double beta, int n, const Given& g) {
   switch (form) {
     case CurveForm::SphereFriction:
-      return np > 1 ? sphere_friction(beta, p[0], p[1]) : sphere_friction(beta, p[0]);
+      return np > 2 ? sphere_friction(beta, p[0], p[1], p[2])
+             : np > 1 ? sphere_friction(beta, p[0], p[1])
+                      : sphere_friction(beta, p[0]);
     case CurveForm::SphereDriving:
       return np > 1 ? sphere_driving(beta, p[0], p[1]) : sphere_driving(beta, p[0]);
     case CurveForm::RodColumn:
@@ -266,8 +268,8 @@ CurveFit fit_curve(CurveForm form, const std::vector<CurvePoint>& points, std::v
   if (form == CurveForm::RodVelocityRatio && (!divisor || np < 2))
     throw std::invalid_argument("fit_curve: RodVelocityRatio needs the parallel velocity lambda_par(beta, n) and "
                                 "a polynomial term and k_held");
-  if ((form == CurveForm::SphereFriction || form == CurveForm::SphereDriving) && np > 2)
-    throw std::invalid_argument("fit_curve: the sphere forms have one or two parameters");
+  if ((form == CurveForm::SphereFriction && np > 3) || (form == CurveForm::SphereDriving && np > 2))
+    throw std::invalid_argument("fit_curve: the sphere friction has one to three parameters, the sphere driving one or two");
   if (form == CurveForm::RodColumnGrowth && np < 2)
     throw std::invalid_argument("fit_curve: RodColumnGrowth needs a polynomial term and k");
   CurveResiduals res{form, &points, {lone, rod_friction_inf, growth, divisor}, np};

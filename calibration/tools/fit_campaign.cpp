@@ -48,7 +48,7 @@ namespace {
 // Published lone-sphere coefficients (hydro/confinement_forms.h): Faxen's
 // mid-plane friction series (Happel & Brenner 1965, eq. 7-4.28) and Faxen's
 // law in the parabolic gap profile.
-constexpr double kFaxenFriction = 1.004, kFaxenCubic = 0.418, kFaxenDriving = 1.0 / 3.0;
+constexpr double kFaxenFriction = 1.004, kFaxenCubic = 0.418, kFaxenQuintic = 0.169, kFaxenDriving = 1.0 / 3.0;
 // Default terms of the polynomials in beta: the infinite rod's friction per
 // sphere c_inf(beta) and its velocity's correction q(beta)
 // (confinement_forms.h); --friction-terms, --velocity-terms.
@@ -158,8 +158,9 @@ int main(int argc, char** argv) {
     // p3 = 0.418; velocity p0 = 1/3, p2 = 0) is kept where the resolved runs
     // do not reject it: if every resolved lone sphere lies within two of its
     // standard uncertainties (mesh change and floor, campaign_analysis.py)
-    // of the published curve. Otherwise the table uses the fit: both
-    // coefficients with points at three or more beta, else p0 alone.
+    // of the published curve. Otherwise the table uses the fit: every
+    // coefficient (friction: p0, p3, p5 with points at five or more beta;
+    // p0, p3 at three or four) with points at three or more beta, else p0 alone.
     struct SphereChoice {
       CurveFit free, table;
       bool published = false;
@@ -168,6 +169,7 @@ int main(int argc, char** argv) {
       const auto p = select(pts, q, true);
       SphereChoice c;
       if (p.size() < 3) published.resize(1);
+      else if (p.size() < 5) published.resize(std::min<std::size_t>(published.size(), 2));  // p5 needs five beta
       c.free = fit_curve(form, p, published);
       CurveFit pub = c.free;
       pub.params = published;
@@ -182,7 +184,8 @@ int main(int argc, char** argv) {
                   c.published ? "the published values" : "the fit");
       return c;
     };
-    const SphereChoice sfc = sphere_fit("sphere_friction", CurveForm::SphereFriction, {kFaxenFriction, kFaxenCubic});
+    const SphereChoice sfc = sphere_fit("sphere_friction", CurveForm::SphereFriction,
+                                           {kFaxenFriction, kFaxenCubic, kFaxenQuintic});
     const SphereChoice sdc = sphere_fit("sphere_driving", CurveForm::SphereDriving, {kFaxenDriving, 0.0});
     const CurveFit &sf = sfc.table, &sd = sdc.table, &sf_free = sfc.free, &sd_free = sdc.free;
     const CurveFit pf = fit_of("par_friction", CurveForm::RodColumn, std::vector<double>(friction_terms, 0.0));
@@ -286,7 +289,7 @@ int main(int argc, char** argv) {
         return o.str() + "]";
       };
       r << "  \"sphere_table\": {\"sphere_friction\": {\"fitted\": " << arr(sf_free.params) << ", \"std_errors\": "
-        << arr(sf_free.std_errors) << ", \"published\": " << arr({kFaxenFriction, kFaxenCubic}) << ", \"table\": "
+        << arr(sf_free.std_errors) << ", \"published\": " << arr({kFaxenFriction, kFaxenCubic, kFaxenQuintic}) << ", \"table\": "
         << arr(sf.params) << "}, \"sphere_driving\": {\"fitted\": " << arr(sd_free.params) << ", \"std_errors\": "
         << arr(sd_free.std_errors) << ", \"published\": " << arr({kFaxenDriving, 0.0}) << ", \"table\": "
         << arr(sd.params) << "}, \"rule\": \"published values kept if every resolved lone sphere is within 2 sigma of the "

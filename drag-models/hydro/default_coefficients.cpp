@@ -18,7 +18,7 @@
 // are calibration/data/confinement_campaign.txt (test
 // calibration_CalibratedLevels.BuiltInTableIsTheShippedFit).
 // Forms (hydro/confinement_forms.h):
-//  - sphere_friction  Faxen's series, p0 and the beta^3 coefficient p3
+//  - sphere_friction  Faxen's series, p0, the beta^3 coefficient p3 and the beta^5 coefficient p5
 //  - sphere_driving   3/2 (1 - p0 beta^2 - p2 beta^4) (Faxen's law: 1/3, 0)
 //    (Faxen's published values where the fit does not reject them)
 //  - rod friction per sphere over the lone sphere's, rod of n spheres:
@@ -60,8 +60,10 @@ ConfinementTable ConfinementTable::default_table() {
   for (int k = 0; k <= 17; ++k) {
     const double beta = 0.05 * k;  // 0 .. 0.85
     ConfinementCoefficients c;
-    c.sphere_friction = terms(k_sphere_friction) > 1 ? sphere_friction(beta, k_sphere_friction[0], k_sphere_friction[1])
-                                                     : sphere_friction(beta, k_sphere_friction[0]);
+    const int ns = terms(k_sphere_friction);
+    c.sphere_friction = ns > 2   ? sphere_friction(beta, k_sphere_friction[0], k_sphere_friction[1], k_sphere_friction[ns > 2 ? 2 : 0])
+                        : ns > 1 ? sphere_friction(beta, k_sphere_friction[0], k_sphere_friction[1])
+                                 : sphere_friction(beta, k_sphere_friction[0]);
     c.sphere_driving = terms(k_sphere_driving) > 1 ? sphere_driving(beta, k_sphere_driving[0], k_sphere_driving[1])
                                                    : sphere_driving(beta, k_sphere_driving[0]);
     const double ls = c.sphere_driving, g = rod_growth(beta, perpendicular_growth_coefficient());

@@ -7,7 +7,7 @@
 
 namespace hsrod::default_fit {
 
-constexpr double k_sphere_friction[2] = {0.9850380244, 0.1743753396};  // +- 0.01 0.019
+constexpr double k_sphere_friction[3] = {1.001355233, 0.3161428057, 0.3702041684};  // +- 0.018 0.13 0.18
 constexpr double k_sphere_driving[2] = {0.3358640645, 0.09312878889};  // +- 0.011 0.022
 constexpr double k_par_friction[3] = {0.2507835736, 0.4141244348, -0.14142721};  // +- 0.0098 0.064 0.075
 constexpr double k_perp_friction[4] = {0.3659745944, 1.394992875, -1.294226748, 0.3149009053};  // +- 0.0085 0.064 0.081 0.0073

@@ -123,5 +123,6 @@ TEST(calibration_CurveFit, BadInputRefused) {
   EXPECT_THROW(fit_curve(CurveForm::RodColumnGrowth, pts, {0.4}), std::invalid_argument);  // no k
   EXPECT_THROW(fit_curve(CurveForm::RodHeld, pts, {0.1, 0.0}, one), std::invalid_argument);  // no c_inf, g
   EXPECT_THROW(fit_curve(CurveForm::RodVelocityRatio, pts, {0.1, 0.3}, one, one, one), std::invalid_argument);  // no divisor
-  EXPECT_THROW(fit_curve(CurveForm::SphereFriction, pts, {1.0, 0.4, 0.2}), std::invalid_argument);  // 3 params
+  EXPECT_THROW(fit_curve(CurveForm::SphereFriction, pts, {1.0, 0.4, 0.2, 0.1}), std::invalid_argument);  // 4 params
+  EXPECT_THROW(fit_curve(CurveForm::SphereDriving, pts, {1.0, 0.4, 0.2}), std::invalid_argument);    // 3 params
 }

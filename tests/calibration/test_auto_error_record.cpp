@@ -109,8 +109,8 @@ TEST(calibration_AutoErrorModel, InterpolatedRecordPredictsTheHeldOutRod) {
       //
       // Beyond the record's longest rod (N = 10) the record is clamped and says so (extrapolated: auto prints
       // "scene outside the record"); there it is not a prediction and is not held to the bound. Session 8:
-      // the held-out N = 15 rod at beta 0.3 has force errors 6.0 % (level 3) and 5.3 % (level 4) against the
-      // clamped 2.5 % / 1.8 % of N = 10 (the near field's across-flow load falls behind the pressure build-up
+      // the held-out N = 15 rod at beta 0.3 has force errors 5.3 % (level 3) and 4.6 % (level 4) against the
+      // clamped ~2 % of N = 10 (the near field's across-flow load falls behind the pressure build-up
       // of rods longer than the fitted ones, calibration/data/near_field_coupling.txt).
       if (predicted.extrapolated) {
         EXPECT_GT(now.n, 10) << "only the longer held-out rod lies outside the record";

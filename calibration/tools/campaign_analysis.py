@@ -53,7 +53,9 @@ def load_results(out):
     for f in sorted(glob.glob(os.path.join(out, "results", "*.json"))):
         with open(f) as fh:
             r = json.load(fh)
-        if r.get("schema") == "hsrod-campaign-case 1":
+        # straight rows in the wide slit only: bent rods and rows near walls
+        # and pores (spec "geometry") are read by geometry_cases.py
+        if r.get("schema") == "hsrod-campaign-case 1" and "geometry" not in r.get("spec", {}):
             r["source"] = repo_path(f)
             res.append(r)
     if os.path.exists(os.path.join(out, RECORD_CSV)):

@@ -95,8 +95,29 @@ def load_plan(path):
         return json.load(f)
 
 
+# Geometries of a series ("geometry", default "slit"):
+#   slit  a straight row at the mid-plane of a wide slit (slitBody);
+#   bent  a bent (C-shaped) rod in the wide slit: n spheres on an arc turning
+#         by "bend_deg" (slitBody, body.shape "arc"); loads at 45 degrees to
+#         the chord, as for a straight row (the slit is isotropic in its plane);
+#   wall  a rigid row near the side wall y = 0 of a channel (channelBody), in-plane
+#         angle "row_angle_deg" to the wall (0 parallel, 90 perpendicular),
+#         smallest surface gap "gap" d; channel {"W_over_H", "L_over_H"};
+#   pore  the same beside the lower cylinder of a pore constriction at the
+#         channel's middle, channel {"W_over_H", "L_over_H", "R_over_H"}.
+# Near a wall the slit is no longer isotropic in its plane: the in-plane angle
+# is a parameter, the held run is in the channel flow (along the wall) and the
+# dragged run translates the row at "drag_angle_deg" (default 45: along -x and
+# towards the wall at once; the totals along and across the wall separate by
+# the mirror symmetry x -> -x of these rows).
+GEOMETRIES = ("slit", "bent", "wall", "pore")
+
+
 def case_spec(plan, series, load, n_d):
     n = int(series["n"])
+    geometry = series.get("geometry", "slit")
+    if geometry not in GEOMETRIES:
+        sys.exit("hsrod_campaign: series geometry must be one of %s (got '%s')" % (", ".join(GEOMETRIES), geometry))
     spec = {
         "beta": float(series["beta"]), "n": n, "spacing": float(series.get("spacing", 1)),
         "load": load, "flow_angle_deg": 0.0 if n == 1 else 45.0, "cells_per_diameter": int(n_d),
@@ -105,9 +126,21 @@ def case_spec(plan, series, load, n_d):
         "mesh": dict(plan.get("mesh", {}), **series.get("mesh", {})),
         "control": dict(plan.get("control", {}), **series.get("control", {})),
     }
+    if geometry == "bent":
+        spec["geometry"] = {"kind": "bent", "bend_deg": float(series["bend_deg"])}
+        tag = "bent_c%g_" % spec["geometry"]["bend_deg"]
+    elif geometry in ("wall", "pore"):
+        ch = dict(series.get("channel", {}))
+        spec["geometry"] = {"kind": geometry, "gap": float(series["gap"]),
+                            "row_angle_deg": float(series.get("row_angle_deg", 0.0)), "channel": ch}
+        spec["mesh"] = dict(series.get("mesh", {}))        # channelBody: its own mesh keys
+        spec["flow_angle_deg"] = float(series.get("drag_angle_deg", 45.0)) if load == "friction" else 0.0
+        tag = "%s_a%g_g%g_" % (geometry, spec["geometry"]["row_angle_deg"], spec["geometry"]["gap"])
+    else:
+        tag = ""
     key = json.dumps({k: v for k, v in spec.items() if k != "role"}, sort_keys=True)
-    spec["id"] = "b%.3f_n%d_s%g_%s_m%d_%s" % (spec["beta"], n, spec["spacing"], load, n_d,
-                                             hashlib.sha1(key.encode()).hexdigest()[:8])
+    spec["id"] = "%sb%.3f_n%d_s%g_%s_m%d_%s" % (tag, spec["beta"], n, spec["spacing"], load, n_d,
+                                               hashlib.sha1(key.encode()).hexdigest()[:8])
     return spec
 
 
@@ -125,12 +158,35 @@ def expand(plan):
 
 def scene_of(spec):
     ctl = dict(spec["control"])
+    geo = spec.get("geometry", {"kind": "slit"})
+    if geo["kind"] in ("wall", "pore"):
+        H = spec["d"] / spec["beta"]
+        ch = geo["channel"]
+        scene = {"kind": "channelBody", "d": spec["d"], "beta": spec["beta"], "U": spec["U"],
+                 "channel": {"L": ch.get("L_over_H", 12.0) * H, "W": ch.get("W_over_H", 5.0) * H},
+                 "body": {"n": spec["n"], "spacing": spec["spacing"], "angle_deg": geo["row_angle_deg"],
+                          "gap": geo["gap"], "near": geo["kind"]},
+                 "load": spec["load"], "flow_angle_deg": spec["flow_angle_deg"],
+                 "fluid": {"mu": spec["mu"], "rho": spec["rho"]},
+                 "mesh": dict(spec["mesh"], cells_per_diameter=spec["cells_per_diameter"]),
+                 "ib": {"minCellsPerDiameter": 3}, "control": ctl}
+        if geo["kind"] == "pore":
+            scene["pore"] = {"R": ch.get("R_over_H", 1.5) * H, "x": 0.5 * scene["channel"]["L"]}
+        return scene
+    body = {"n": spec["n"], "spacing": spec["spacing"]}
+    if geo["kind"] == "bent":
+        body.update(shape="arc", bend_deg=geo["bend_deg"])
     return {"kind": "slitBody", "d": spec["d"], "beta": spec["beta"], "U": spec["U"],
-            "body": {"n": spec["n"], "spacing": spec["spacing"]}, "load": spec["load"],
+            "body": body, "load": spec["load"],
             "flow_angle_deg": spec["flow_angle_deg"],
             "fluid": {"mu": spec["mu"], "rho": spec["rho"]},
             "mesh": dict(spec["mesh"], cells_per_diameter=spec["cells_per_diameter"]),
             "ib": {"minCellsPerDiameter": 3}, "control": ctl}
+
+
+def make_case(scene, case):
+    """Write the case of `scene` (hsrod_case.py); returns its (estimated) cell count."""
+    return hsrod_case.KINDS[scene["kind"]](scene, case)
 
 
 def cell_count(spec):
@@ -138,7 +194,7 @@ def cell_count(spec):
         with open(os.devnull, "w") as dn:
             old, sys.stdout = sys.stdout, dn
             try:
-                return hsrod_case.make_slit_body(scene_of(spec), tmp)
+                return make_case(scene_of(spec), tmp)
             finally:
                 sys.stdout = old
 
@@ -151,6 +207,15 @@ COST_C = 2.0e-6
 
 def predicted_cost(cells, c=COST_C):
     return c * cells ** 1.5
+
+
+# The plain budget rule (campaign README): 1.6e-6 s CPU per cell-iteration
+# (median of the beta-range cases) x ~80 pseudo-time iterations.
+COST_PER_CELL_ITERATION, TYPICAL_ITERATIONS = 1.6e-6, 80
+
+
+def budget_cost(cells):
+    return COST_PER_CELL_ITERATION * TYPICAL_ITERATIONS * cells
 
 
 # ---------------------------------------------------------------- provenance
@@ -252,7 +317,7 @@ def run_case(spec, out, solver, keep):
         with open(os.devnull, "w") as dn:
             old, sys.stdout = sys.stdout, dn
             try:
-                cells_est = hsrod_case.make_slit_body(scene, case)
+                cells_est = make_case(scene, case)
             finally:
                 sys.stdout = old
         with open(os.path.join(case, "scene.json"), "w") as f:
@@ -311,15 +376,17 @@ def fmt_s(s):
 def cmd_plan(a):
     plan = load_plan(a.plan)
     cases = expand(plan)
-    total = 0.0
-    print("%-44s %-8s %9s %10s" % ("case", "role", "cells", "est CPU"))
+    total = total_budget = 0.0
+    print("%-58s %-8s %9s %10s %10s" % ("case", "role", "cells", "est CPU", "budget"))
     for c in cases:
         cells = cell_count(c)
-        cost = predicted_cost(cells)
+        cost, budget = predicted_cost(cells), budget_cost(cells)
         total += cost
-        print("%-44s %-8s %9d %10s" % (c["id"], c["role"], cells, fmt_s(cost)))
-    print("%d cases, estimated %s CPU on one core of the reference machine (cost model CPU = %.3g cells^1.5 s)"
-          % (len(cases), fmt_s(total), COST_C))
+        total_budget += budget
+        print("%-58s %-8s %9d %10s %10s" % (c["id"], c["role"], cells, fmt_s(cost), fmt_s(budget)))
+    print("%d cases, estimated %s CPU on one core of the reference machine (cost model CPU = %.3g cells^1.5 s); "
+          "budget rule cells x %.2g s x %d iterations: %s"
+          % (len(cases), fmt_s(total), COST_C, COST_PER_CELL_ITERATION, TYPICAL_ITERATIONS, fmt_s(total_budget)))
 
 
 def cmd_status(a):
@@ -329,7 +396,7 @@ def cmd_status(a):
     for c in cases:
         r = read_result(result_path(a.out, c["id"]))
         done += r is not None
-        print("%-44s %s" % (c["id"], "done (%d cells, %d it, %.0f s CPU)" % (
+        print("%-58s %s" % (c["id"], "done (%d cells, %d it, %.0f s CPU)" % (
             r["mesh"]["cells"], r["run"]["iterations"], r["run"]["cpu_s"]) if r else "missing"))
     print("%d of %d cases done" % (done, len(cases)))
 

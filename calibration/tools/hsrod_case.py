@@ -26,7 +26,11 @@ Scene kinds (key "kind"); all quantities in SI units:
   slitBody            a straight row of spheres (rigid rod, pair) at the
                       mid-plane of a wide slit, dragged ("load": "friction")
                       or held in plane Poiseuille flow ("driving") at
-                      flow_angle_deg to the row; see make_slit_body.
+                      flow_angle_deg to the row; see make_slit_body; a
+                      bent (C-shaped) rod: body.shape "arc", body.bend_deg.
+  channelBody         a rigid row near a side wall or a pore cylinder of a
+                      channel, dragged in the lab frame or held in the
+                      channel flow; see make_channel_body.
   sphereBetweenPlates one sphere (or a rigid rod, "rod": {"n", "angle_deg"})
                       midway between no-slip plates z = 0, H moving at -U
                       relative to the body (body-fixed frame: plates and
@@ -626,10 +630,38 @@ def outer_cells(length, h, ratio_max):
     return n
 
 
+def slit_body_spheres(body, d):
+    """Sphere centres of a slitBody row, its bounding box centred on the
+    origin in the mid-plane z = 0:
+      shape "straight" (default): n spheres along x, centre spacing
+                       body.spacing d;
+      shape "arc":     a bent (C-shaped) rod: n spheres on a circular arc in
+                       the x-y plane, neighbours body.spacing d apart (chord),
+                       turning by body.bend_deg in all (180: a half circle),
+                       symmetric about the y axis (chord along x)."""
+    n = int(body.get("n", 1))
+    spacing = float(body.get("spacing", 1.0)) * d
+    shape = body.get("shape", "straight")
+    if shape == "straight":
+        return [{"id": i + 1, "x": [(i - 0.5 * (n - 1)) * spacing, 0.0, 0.0], "d": d} for i in range(n)]
+    if shape != "arc":
+        sys.exit("hsrod_case: slitBody body.shape must be straight or arc (got '%s')" % shape)
+    bend = math.radians(float(body.get("bend_deg", 0.0)))
+    if n < 3 or not (0.0 < bend < 2.0 * math.pi * (n - 1) / n):
+        sys.exit("hsrod_case: an arc needs n >= 3 and 0 < bend_deg < 360 (n - 1)/n (got n %d, bend_deg %g)"
+                 % (n, math.degrees(bend)))
+    step = bend / (n - 1)                            # turn per bond [rad]
+    radius = spacing / (2.0 * math.sin(0.5 * step))  # chord = spacing
+    pts = [(radius * math.sin(-0.5 * bend + i * step), -radius * math.cos(-0.5 * bend + i * step)) for i in range(n)]
+    yc = 0.5 * (min(p[1] for p in pts) + max(p[1] for p in pts))
+    return [{"id": i + 1, "x": [p[0], p[1] - yc, 0.0], "d": d} for i, p in enumerate(pts)]
+
+
 def make_slit_body(scene, case):
-    """A straight row of n spheres (a rigid rod for spacing 1, a pair for
-    n = 2) at the mid-plane of a wide slit of gap H = d / beta, the row along
-    x, in creeping flow, steady. The mesh is fixed to the row (uniform cells
+    """A row of n spheres (a rigid rod for spacing 1, a pair for n = 2, a
+    bent rod for body.shape "arc": slit_body_spheres) at the mid-plane of a
+    wide slit of gap H = d / beta, the row (its chord) along x, in creeping
+    flow, steady. The mesh is fixed to the row (uniform cells
     d / cells_per_diameter around it, geometric stretching to lateral faces
     lateral_half_width H beyond the row's ends and to the plates), so one run
     with the load at flow_angle_deg to the row gives the parallel and the
@@ -647,8 +679,6 @@ def make_slit_body(scene, case):
     d, beta, U = scene["d"], scene["beta"], scene["U"]
     H = d / beta
     body = scene.get("body", {})
-    n = int(body.get("n", 1))
-    spacing = float(body.get("spacing", 1.0)) * d
     m = scene.get("mesh", {})
     n_d = m.get("cells_per_diameter", 8)
     n_ref = m.get("reference_cells_per_diameter", 8)
@@ -656,9 +686,9 @@ def make_slit_body(scene, case):
     scale = float(n_d) / n_ref
     core_w = m.get("core_half_width", 0.75) * d
     lat = m.get("lateral_half_width", 4.0) * H
-    spheres = [{"id": i + 1, "x": [(i - 0.5 * (n - 1)) * spacing, 0.0, 0.0], "d": d} for i in range(n)]
+    spheres = slit_body_spheres(body, d)
     axes = []
-    for ext in (0.5 * (n - 1) * spacing, 0.0):
+    for ext in (max(abs(s["x"][k]) for s in spheres) for k in (0, 1)):
         core = math.ceil((ext + core_w) / h - 1e-9) * h
         n_out = max(1, int(round(scale * outer_cells(ext + lat - core, h_ref, m.get("ratio_lateral", 1.25)))))
         axes.append(Axis.focused(-(ext + lat), ext + lat, -core, core, h, n_out))
@@ -689,7 +719,99 @@ def make_slit_body(scene, case):
     return axes[0].ncells() * axes[1].ncells() * az.ncells()
 
 
-KINDS = {"channel": make_channel, "sphereInBox": make_sphere_in_box,
+def channel_body_spheres(scene):
+    """Sphere centres of a channelBody row: n spheres (centre spacing
+    body.spacing d) along the in-plane direction body.angle_deg from x, in
+    the mid-plane z = H/2, placed so that the smallest surface gap to the
+    obstacle named by body.near is body.gap d:
+      near "wall": the side wall y = 0 (the row centred at x = body.x,
+                   default L/2);
+      near "pore": the lower pore cylinder (axis (pore.x, 0), radius pore.R),
+                   the row's centre at x = pore.x (the throat), beside the
+                   cylinder."""
+    d, H = scene["d"], scene["d"] / scene["beta"]
+    ch, body = scene["channel"], scene["body"]
+    n, s = int(body.get("n", 1)), float(body.get("spacing", 1.0)) * d
+    a = math.radians(float(body.get("angle_deg", 0.0)))
+    gap = float(body["gap"]) * d
+    near = body.get("near", "wall")
+    offs = [((i - 0.5 * (n - 1)) * s * math.cos(a), (i - 0.5 * (n - 1)) * s * math.sin(a)) for i in range(n)]
+    if near == "wall":
+        xc = float(body.get("x", 0.5 * ch["L"]))
+        yc = gap + 0.5 * d - min(o[1] for o in offs)
+    elif near == "pore":
+        pore = scene.get("pore")
+        if not pore:
+            sys.exit("hsrod_case: channelBody body.near pore needs a \"pore\" {R, x}")
+        xc, R = pore["x"], pore["R"]
+        surface_gap = lambda y: min(math.hypot(xc + o[0] - xc, y + o[1]) for o in offs) - R - 0.5 * d
+        lo, hi = R, R + gap + 0.5 * d + n * s + d     # surface_gap(lo) <= gap <= surface_gap(hi)
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if surface_gap(mid) < gap else (lo, mid)
+        yc = 0.5 * (lo + hi)
+    else:
+        sys.exit("hsrod_case: channelBody body.near must be wall or pore (got '%s')" % near)
+    out = [{"id": i + 1, "x": [xc + o[0], yc + o[1], 0.5 * H], "d": d} for i, o in enumerate(offs)]
+    for sp in out:
+        if not (0.5 * d < sp["x"][1] < ch["W"] - 0.5 * d and 0.5 * d < sp["x"][0] < ch["L"] - 0.5 * d):
+            sys.exit("hsrod_case: channelBody sphere %d at (%g, %g) leaves the channel" % (sp["id"], sp["x"][0], sp["x"][1]))
+    return out
+
+
+def make_channel_body(scene, case):
+    """A rigid row of spheres near a side wall or a pore cylinder of a
+    channel (L x W x H, side walls y = 0 and y = W, optional pore
+    constriction), steady creeping flow, loads in the lab frame:
+      load "friction": the row translates at -U e, e = (cos f, sin f, 0),
+                       f = flow_angle_deg, through fluid at rest (walls at
+                       rest, no inflow): the instantaneous (quasi-steady)
+                       Stokes resistance, so a motion towards the wall is
+                       allowed;
+      load "driving":  the row is held in the channel flow of mean velocity
+                       U (flow-rate inlet at x = 0, outlet p = 0).
+    Mesh: uniform cubes of 2 d / cells_per_diameter (the pore's body-fitted
+    blocks for a pore), refined once (refineMesh) in a full-height box
+    mesh.refine_margin d (default 1) around the spheres, so the spheres and
+    the gap to the wall have d / cells_per_diameter cells. Returns the
+    estimated number of cells."""
+    d, U = scene["d"], scene["U"]
+    H = d / scene["beta"]
+    ch = scene["channel"]
+    L, W = ch["L"], ch["W"]
+    m = scene.get("mesh", {})
+    n_d = m.get("cells_per_diameter", 6)
+    h0 = 2.0 * d / n_d
+    spheres = channel_body_spheres(scene)
+    load = scene.get("load", "friction")
+    if load == "friction":
+        f = math.radians(scene.get("flow_angle_deg", 0.0))
+        for sp in spheres:
+            sp["v"] = [-U * math.cos(f), -U * math.sin(f), 0.0]
+        inflow = {"type": "meanVelocity", "U": 0.0}
+    elif load == "driving":
+        inflow = {"type": "meanVelocity", "U": U}
+    else:
+        sys.exit("hsrod_case: channelBody load must be friction or driving (got '%s')" % load)
+    margin = float(m.get("refine_margin", 1.0)) * d
+    lo = [max(0.0, min(sp["x"][k] for sp in spheres) - 0.5 * d - margin) for k in (0, 1)] + [-0.01 * H]
+    hi = [min((L, W)[k], max(sp["x"][k] for sp in spheres) + 0.5 * d + margin) for k in (0, 1)] + [1.01 * H]
+    sub = {"kind": "channel", "channel": {"L": L, "W": W, "H": H}, "fluid": scene["fluid"], "inflow": inflow,
+           "spheres": spheres, "refine": {"levels": 1, "box": [lo, hi]},
+           "ib": dict(scene.get("ib", {})),
+           "control": dict(scene.get("control", {}), steady=True, creeping=True)}
+    if scene.get("pore"):
+        sub["pore"] = scene["pore"]
+        sub["mesh"] = {"h": h0}
+    else:
+        sub["mesh"] = {"nx": int(round(L / h0)), "ny": int(round(W / h0)), "nz": int(round(H / h0))}
+    make_channel(sub, case)
+    base = L * W * H / h0 ** 3
+    box = (hi[0] - lo[0]) * (hi[1] - lo[1]) * H / h0 ** 3
+    return int(round(base + 7 * box))
+
+
+KINDS = {"channel": make_channel, "channelBody": make_channel_body, "sphereInBox": make_sphere_in_box,
          "sphereBetweenPlates": make_sphere_between_plates, "slitBody": make_slit_body}
 
 

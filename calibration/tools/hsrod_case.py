@@ -413,7 +413,17 @@ def write_pore_block_mesh(case, L, W, H, xc, R, h):
             name, ptype, "".join("            %s\n" % f for f in faces))
     body += ");\n\nmergePatchPairs ();\n"
     foam_file(os.path.join(case, "system", "blockMeshDict"), "dictionary", "blockMeshDict", body)
-    return 2 * (n_up + n_rad + 2 * n_t + n_rad + n_dn) * n_half * nz  # rough cell count
+    # planform cell centres (bilinear in each block: the arcs are ignored),
+    # for cell estimates (make_channel_body); cells = len(centres) * nz
+    centres = []
+    for quad, ni, nj in blocks:
+        q = [P[k] for k in quad]
+        for i in range(ni):
+            for j in range(nj):
+                u, v = (i + 0.5) / ni, (j + 0.5) / nj
+                centres.append(tuple((1 - u) * (1 - v) * q[0][k] + u * (1 - v) * q[1][k] + u * v * q[2][k]
+                                     + (1 - u) * v * q[3][k] for k in (0, 1)))
+    return centres, nz
 
 
 def write_liggghts_input(case, L, W, H, spheres, dem, rod=None, pore=None):
@@ -491,12 +501,13 @@ def make_channel(scene, case):
     pore = scene.get("pore")
     if pore:
         h = m.get("h", W / m.get("ny", 24))
-        write_pore_block_mesh(case, L, W, H, pore.get("x", 0.5 * L), pore["R"], h)
+        centres, nz = write_pore_block_mesh(case, L, W, H, pore.get("x", 0.5 * L), pore["R"], h)
     else:
         ny = m.get("ny", 24)
         nz = m.get("nz", max(4, int(round(ny * H / W))))
         nx = m.get("nx", max(1, int(round(nz * L / H))))
         ax, ay, az = Axis.uniform(0, L, nx), Axis.uniform(0, W, ny), Axis.uniform(0, H, nz)
+        centres = [((i + 0.5) * L / nx, (j + 0.5) * W / ny) for i in range(nx) for j in range(ny)]
         write_block_mesh(case, ax, ay, az, {"xmin": ("inlet", "patch"), "xmax": ("outlet", "patch"),
                                            "ymin": ("walls", "wall"), "ymax": ("walls", "wall"),
                                            "zmin": ("walls", "wall"), "zmax": ("walls", "wall")})
@@ -538,6 +549,7 @@ def make_channel(scene, case):
         hi = [max(s["x"][k] + 0.5 * s["d"] for s in spheres) + refine["margin"] for k in range(3)]
         write_refinement(case, lo, hi)
     write_allrun(case, refine)
+    return centres, nz     # planform cell centres of the block mesh (before refinement), cells in z
 
 
 def make_sphere_in_box(scene, case):
@@ -805,10 +817,9 @@ def make_channel_body(scene, case):
         sub["mesh"] = {"h": h0}
     else:
         sub["mesh"] = {"nx": int(round(L / h0)), "ny": int(round(W / h0)), "nz": int(round(H / h0))}
-    make_channel(sub, case)
-    base = L * W * H / h0 ** 3
-    box = (hi[0] - lo[0]) * (hi[1] - lo[1]) * H / h0 ** 3
-    return int(round(base + 7 * box))
+    centres, nz = make_channel(sub, case)
+    in_box = sum(1 for c in centres if lo[0] <= c[0] <= hi[0] and lo[1] <= c[1] <= hi[1])
+    return (len(centres) + 7 * in_box) * nz
 
 
 KINDS = {"channel": make_channel, "channelBody": make_channel_body, "sphereInBox": make_sphere_in_box,

@@ -84,14 +84,20 @@ RowResponse row_response(const RowLoads& loads) {
   return out;
 }
 
+std::unique_ptr<HydrodynamicModel> make_level_model(const std::string& model_name, const HydrodynamicParameters& p,
+                                                    const ConfinementTable& table,
+                                                    const NearFieldCalibration& near_field) {
+  const double beta = p.beta();  // the near field's parameters are functions of beta
+  if (model_name == "nonlocal") return std::make_unique<NonlocalRodModel>(p, table, near_field.nonlocal.at(beta));
+  if (model_name == "twoway")
+    return std::make_unique<NearFieldTwoWayModel>(p, table, TwoWayWindowOptions{}, near_field.twoway.at(beta));
+  return make_hydrodynamic_model(model_name, p, table);
+}
+
 RowResponse row_response(const std::string& model_name, double beta, int n, double spacing,
                          const ConfinementTable& table, const NearFieldCalibration& near_field) {
   const HydrodynamicParameters p = row_parameters(beta);
-  std::unique_ptr<HydrodynamicModel> model;
-  if (model_name == "nonlocal") model = std::make_unique<NonlocalRodModel>(p, table, near_field.nonlocal.at(beta));
-  else if (model_name == "twoway")
-    model = std::make_unique<NearFieldTwoWayModel>(p, table, TwoWayWindowOptions{}, near_field.twoway.at(beta));
-  else model = make_hydrodynamic_model(model_name, p, table);
+  const std::unique_ptr<HydrodynamicModel> model = make_level_model(model_name, p, table, near_field);
   return row_response(row_loads(*model, p, n, spacing));
 }
 

@@ -13,6 +13,7 @@
 // velocity over U), r = lambda_perp / lambda_par.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,12 @@ struct RowResponse {
 RowResponse row_response(const std::string& model, double beta, int n, double spacing,
                          const ConfinementTable& table,
                          const NearFieldCalibration& near_field = NearFieldCalibration::built_in());
+
+// The model of a level as the cross-check evaluates it: levels 3-4
+// (nonlocal, twoway) with the given near field, the others from the registry.
+std::unique_ptr<HydrodynamicModel> make_level_model(const std::string& model, const HydrodynamicParameters& parameters,
+                                                    const ConfinementTable& table,
+                                                    const NearFieldCalibration& near_field);
 
 // The loads behind a RowResponse, kept so that a fit can change the near
 // field on them without re-evaluating the model (calibration/core/near_field_fit.h).

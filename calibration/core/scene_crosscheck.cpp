@@ -1,0 +1,141 @@
+#include "scene_crosscheck.h"
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "flow/background_flow.h"
+#include "flow/make_background_flow.h"
+#include "hydro/hydrodynamic_model.h"
+#include "level_crosscheck.h"
+#include "resolved_campaign.h"
+
+namespace hsrod::calib {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Uniform gap-averaged velocity u (zero: fluid at rest) on the given planform:
+// the wide slit of the bent rods (a planform far larger than the rod), or
+// fluid at rest in the channel of a wall / pore case (its walls and pore
+// cylinders stay in the geometry, where levels 4 reflect off them).
+class UniformFlow : public BackgroundFlow {
+ public:
+  UniformFlow(ChannelGeometry geometry, Eigen::Vector2d u) : geometry_(std::move(geometry)), u_(u) {}
+  Eigen::Vector2d velocity(double x, double y) const override {
+    return geometry_.is_fluid(x, y) ? u_ : Eigen::Vector2d::Zero();
+  }
+  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
+  double pressure(double, double) const override { return 0.0; }
+  double mean_velocity() const override { return u_.norm(); }
+  const ChannelGeometry& geometry() const override { return geometry_; }
+  std::string description() const override { return "uniform flow (scene cross-check)"; }
+
+ private:
+  ChannelGeometry geometry_;
+  Eigen::Vector2d u_;
+};
+
+double number(const CsvRow& r, const std::string& k) {
+  const auto it = r.find(k);
+  if (it == r.end()) throw std::runtime_error("scene cross-check table: no column " + k);
+  return std::stod(it->second);
+}
+
+ChannelGeometry channel_of(const SceneCase& c) {
+  std::vector<ZCylinder> cylinders;
+  if (c.geometry == "pore")
+    cylinders = {{c.pore_x, 0.0, c.pore_radius}, {c.pore_x, c.channel_width, c.pore_radius}};
+  return ChannelGeometry(c.channel_length, c.channel_width, c.gap_height(), 0.0, 0.0, cylinders);
+}
+
+}  // namespace
+
+std::vector<SceneCase> read_scene_cases(const std::string& path) {
+  std::map<std::pair<std::string, std::string>, SceneCase> cases;
+  std::map<std::pair<std::string, std::string>, std::map<int, std::pair<Eigen::Vector2d, Eigen::Vector2d>>> loads;
+  std::map<std::pair<std::string, std::string>, std::map<int, Eigen::Vector3d>> centres;
+  for (const CsvRow& r : read_csv_rows(path)) {
+    if (number(r, "finest") != 1.0) continue;
+    const auto key = std::make_pair(r.at("case"), r.at("load"));
+    SceneCase& c = cases[key];
+    c.name = r.at("case");
+    c.geometry = r.at("geometry");
+    c.load = r.at("load");
+    c.beta = number(r, "beta");
+    c.gap_over_d = number(r, "gap_over_d");
+    c.row_angle_deg = number(r, "row_angle_deg");
+    c.bend_deg = number(r, "bend_deg");
+    c.drag_angle_deg = number(r, "drag_angle_deg");
+    c.d = number(r, "d");
+    c.mu = number(r, "mu");
+    c.U = number(r, "U");
+    c.channel_length = number(r, "channel_L");
+    c.channel_width = number(r, "channel_W");
+    c.pore_radius = number(r, "pore_R");
+    c.pore_x = number(r, "pore_x");
+    const int id = static_cast<int>(number(r, "sphere"));
+    centres[key][id] = {number(r, "x"), number(r, "y"), number(r, "z")};
+    loads[key][id] = {{number(r, "fx"), number(r, "fy")}, {number(r, "dfx"), number(r, "dfy")}};
+  }
+  std::vector<SceneCase> out;
+  for (auto& [key, c] : cases) {
+    if (c.geometry != "bent" && c.geometry != "wall" && c.geometry != "pore")
+      throw std::runtime_error(path + ": case " + c.name + ": geometry must be bent, wall or pore");
+    for (const auto& [id, x] : centres[key]) c.positions.push_back(x);
+    for (const auto& [id, f] : loads[key]) {
+      c.resolved.push_back(f.first);
+      c.mesh_change.push_back(f.second);
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<Eigen::Vector2d> scene_forces(const std::string& model_name, const SceneCase& c,
+                                          const ConfinementTable& table, const NearFieldCalibration& near_field) {
+  const HydrodynamicParameters p{c.mu, c.gap_height(), c.d};
+  const std::unique_ptr<HydrodynamicModel> model = make_level_model(model_name, p, table, near_field);
+  RodGeometry rod;
+  rod.sphere_diameter = c.d;
+  rod.positions = c.positions;
+  const int n = rod.size();
+  const double a = c.drag_angle_deg * kPi / 180.0;
+  const Eigen::Vector2d e(std::cos(a), std::sin(a));
+  std::unique_ptr<BackgroundFlow> flow;
+  if (c.geometry == "bent") {
+    // the wide slit: a planform 1000 H wide around the rod (no side wall within reach)
+    const double big = 1000.0 * c.gap_height();
+    const ChannelGeometry slit(big, big, c.gap_height(), -0.5 * big, -0.5 * big);
+    flow = std::make_unique<UniformFlow>(slit, c.load == "driving" ? Eigen::Vector2d(c.U * e) : Eigen::Vector2d::Zero());
+  } else if (c.load == "driving") {
+    flow = make_background_flow(channel_of(c), FluidProperties{c.mu, 1000.0}, Inflow::mean_velocity(c.U));
+  } else {
+    flow = std::make_unique<UniformFlow>(channel_of(c), Eigen::Vector2d::Zero());
+  }
+  RodDrag drag;
+  model->evaluate(rod, *flow, drag);
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(3 * n);
+  if (c.load == "friction")
+    for (int i = 0; i < n; ++i) v.segment<2>(3 * i) = -c.U * e;
+  const Eigen::VectorXd f = drag.forces(v);
+  const double scale = 3.0 * kPi * c.mu * c.d * c.U;
+  std::vector<Eigen::Vector2d> out;
+  for (int i = 0; i < n; ++i) out.emplace_back(f(3 * i) / scale, f(3 * i + 1) / scale);
+  return out;
+}
+
+double profile_rms(const std::vector<Eigen::Vector2d>& model, const std::vector<Eigen::Vector2d>& resolved) {
+  if (model.size() != resolved.size() || resolved.empty())
+    throw std::invalid_argument("profile_rms: model and resolved profiles differ in length");
+  double se = 0.0, mean = 0.0;
+  for (std::size_t i = 0; i < resolved.size(); ++i) {
+    se += (model[i] - resolved[i]).squaredNorm();
+    mean += resolved[i].norm();
+  }
+  const double n = static_cast<double>(resolved.size());
+  return std::sqrt(se / n) / (mean / n);
+}
+
+}  // namespace hsrod::calib

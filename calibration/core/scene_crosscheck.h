@@ -1,0 +1,54 @@
+// hsrod calibration: levels 1-4 against the resolved cases beyond straight
+// rows in a wide slit (campaign "geometry", calibration/tools/geometry_cases.py):
+// bent (C-shaped) rods in the wide slit, rigid rows near a side wall and
+// beside a pore cylinder of a channel. Each case is one rigid configuration
+// and one load, compared sphere by sphere as force vectors in the plane:
+//   friction: every sphere translates at -U e (e = (cos a, sin a, 0),
+//             a = drag angle) through fluid at rest (the wide slit, or the
+//             channel with its walls and pore);
+//   driving:  the spheres held in the flow: the wide slit's uniform stream
+//             U e, or the channel flow of mean velocity U along x.
+// Forces over 3 pi mu d U.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "hydro/confinement_coefficients.h"
+#include "hydro/near_field_coupling.h"
+
+namespace hsrod::calib {
+
+struct SceneCase {
+  std::string name;             // configuration (geometry_cases.py "case")
+  std::string geometry;         // bent | wall | pore
+  std::string load;             // friction | driving
+  double beta = 0.0;            // d / H [-]
+  double gap_over_d = 0.0;      // smallest surface gap to the wall / pore cylinder [d]
+  double row_angle_deg = 0.0;   // in-plane angle of the row to the wall (x axis) [deg]
+  double bend_deg = 0.0;        // total bend of a bent rod [deg]
+  double drag_angle_deg = 0.0;  // a: friction direction e (driving in the slit: the stream's direction) [deg]
+  double d = 0.0, mu = 0.0, U = 0.0;                         // [m], [Pa s], [m/s]
+  double channel_length = 0.0, channel_width = 0.0;          // wall / pore channel L, W [m]
+  double pore_radius = 0.0, pore_x = 0.0;                    // pore cylinders (pore_x, 0) and (pore_x, W) [m]
+  std::vector<Eigen::Vector3d> positions;                    // sphere centres [m]
+  std::vector<Eigen::Vector2d> resolved;                     // per-sphere force / (3 pi mu d U)
+  std::vector<Eigen::Vector2d> mesh_change;                  // change from the next coarser mesh (NaN: none)
+  double gap_height() const { return d / beta; }             // H [m]
+};
+
+// The finest-mesh cases of a geometry_cases.py table, one per (case, load),
+// spheres in id order. Throws std::runtime_error naming the file on bad input.
+std::vector<SceneCase> read_scene_cases(const std::string& path);
+
+// The model's per-sphere in-plane force / (3 pi mu d U) for the case.
+std::vector<Eigen::Vector2d> scene_forces(const std::string& model, const SceneCase& c, const ConfinementTable& table,
+                                          const NearFieldCalibration& near_field = NearFieldCalibration::built_in());
+
+// RMS over the spheres of |model - resolved| over the mean |resolved| [-].
+double profile_rms(const std::vector<Eigen::Vector2d>& model, const std::vector<Eigen::Vector2d>& resolved);
+
+}  // namespace hsrod::calib

@@ -1,0 +1,106 @@
+// hsrod_crosscheck_scenes: levels 1-4 against the resolved cases beyond
+// straight rows in a wide slit: bent (C-shaped) rods, rigid rows near a side
+// wall and beside a pore cylinder (campaign "geometry").
+//
+//   hsrod_crosscheck_scenes CASES.csv OUT.csv [--levels isotropic,local,nonlocal,twoway]
+//                           [--table FILE] [--near-field FILE|off] [--label TEXT]
+//
+// CASES.csv: calibration/data/resolved_geometry_per_sphere.csv
+// (calibration/tools/geometry_cases.py; the finest mesh of every case is
+// used). For every case, load and level (calibration/core/scene_crosscheck.h)
+// OUT.csv gets one row per quantity:
+//   F_x, F_y          total force over 3 pi mu d U (x along the wall and the
+//                     flow, y towards (-) / away from (+) the wall): resolved,
+//                     model, error (model - resolved) / |resolved| and
+//                     error_of_magnitude (model - resolved) / |F_total|;
+//   profile_rms       RMS over the spheres of |F_i,model - F_i,resolved| over
+//                     the mean |F_i,resolved|;
+//   f{x,y}_<i>        per sphere, error over the mean |F_i,resolved|;
+// with the case's geometry, beta, n, gap (d), row angle, bend and load.
+// Prints per level the worst errors per geometry and gap.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "scene_crosscheck.h"
+
+using namespace hsrod::calib;
+
+int main(int argc, char** argv) {
+  CLI::App app{"Cross-check hsrod's reduced models against the resolved wall, pore and bent-rod cases"};
+  std::string cases_path, out_path, table_path, near_field_path, label = "built-in",
+                                                                  levels = "isotropic,local,nonlocal,twoway";
+  app.add_option("cases", cases_path)->required()->check(CLI::ExistingFile);
+  app.add_option("output", out_path)->required();
+  app.add_option("--levels", levels, "models to check");
+  app.add_option("--table", table_path, "coefficient file (default: the built-in table)");
+  app.add_option("--near-field", near_field_path, "near-field coupling file of levels 3-4, or off (default: built-in)");
+  app.add_option("--label", label, "label of this table in the output");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    const hsrod::ConfinementTable table =
+        table_path.empty() ? hsrod::ConfinementTable::default_table() : hsrod::ConfinementTable::read(table_path);
+    const hsrod::NearFieldCalibration near_field =
+        near_field_path.empty()    ? hsrod::NearFieldCalibration::built_in()
+        : near_field_path == "off" ? hsrod::NearFieldCalibration::off()
+                                   : hsrod::NearFieldCalibration::read(near_field_path);
+    const std::vector<SceneCase> cases = read_scene_cases(cases_path);
+    std::ofstream out(out_path);
+    out << "label,level,case,geometry,beta,n,gap_over_d,row_angle_deg,bend_deg,load,quantity,resolved,model,error,"
+           "error_of_magnitude\n";
+    out.precision(8);
+    std::stringstream levels_in(levels);
+    std::string level;
+    while (std::getline(levels_in, level, ',')) {
+      // worst |error| per (geometry, gap): totals (per component where the
+      // component carries >= 20 % of |F|), profile RMS
+      std::map<std::string, std::pair<double, double>> worst;
+      for (const SceneCase& c : cases) {
+        std::vector<Eigen::Vector2d> m;
+        try {
+          m = scene_forces(level, c, table, near_field);
+        } catch (const std::exception& e) {
+          std::printf("%-9s %-26s %-8s: not evaluated: %s\n", level.c_str(), c.name.c_str(), c.load.c_str(), e.what());
+          continue;
+        }
+        Eigen::Vector2d tm = Eigen::Vector2d::Zero(), tr = Eigen::Vector2d::Zero();
+        for (std::size_t i = 0; i < m.size(); ++i) {
+          tm += m[i];
+          tr += c.resolved[i];
+        }
+        char head[512];
+        std::snprintf(head, sizeof head, "%s,%s,%s,%s,%g,%zu,%g,%g,%g,%s", label.c_str(), level.c_str(), c.name.c_str(),
+                      c.geometry.c_str(), c.beta, m.size(), c.gap_over_d, c.row_angle_deg, c.bend_deg, c.load.c_str());
+        std::string group = c.geometry + (c.geometry == "bent" ? "" : " gap " + std::to_string(c.gap_over_d).substr(0, 4) + " d");
+        auto& w = worst[group];
+        for (int k = 0; k < 2; ++k) {
+          const double err = (tm[k] - tr[k]) / std::abs(tr[k]), err_mag = (tm[k] - tr[k]) / tr.norm();
+          out << head << ",F_" << "xy"[k] << ',' << tr[k] << ',' << tm[k] << ',' << err << ',' << err_mag << '\n';
+          if (std::abs(tr[k]) >= 0.2 * tr.norm()) w.first = std::max(w.first, std::abs(err));
+        }
+        const double rms = profile_rms(m, c.resolved);
+        out << head << ",profile_rms,0,0," << rms << ',' << rms << '\n';
+        w.second = std::max(w.second, rms);
+        double mean = 0.0;
+        for (const auto& f : c.resolved) mean += f.norm() / c.resolved.size();
+        for (std::size_t i = 0; i < m.size(); ++i)
+          for (int k = 0; k < 2; ++k)
+            out << head << ",f" << "xy"[k] << '_' << (i + 1) << ',' << c.resolved[i][k] << ',' << m[i][k] << ','
+                << (m[i][k] - c.resolved[i][k]) / mean << ',' << (m[i][k] - c.resolved[i][k]) / mean << '\n';
+      }
+      for (const auto& [group, w] : worst)
+        std::printf("%-10s %-9s %-16s worst |error|: totals %6.1f %%, per-sphere profile RMS %6.1f %%\n", label.c_str(),
+                    level.c_str(), group.c_str(), 100 * w.first, 100 * w.second);
+    }
+    std::printf("wrote %s\n", out_path.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "hsrod_crosscheck_scenes: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

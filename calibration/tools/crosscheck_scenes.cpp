@@ -4,6 +4,7 @@
 //
 //   hsrod_crosscheck_scenes CASES.csv OUT.csv [--levels isotropic,local,nonlocal,twoway]
 //                           [--table FILE] [--near-field FILE|off] [--label TEXT]
+//                           [--wall-record FILE]
 //
 // CASES.csv: calibration/data/resolved_geometry_per_sphere.csv
 // (calibration/tools/geometry_cases.py; the finest mesh of every case is
@@ -17,7 +18,10 @@
 //                     the mean |F_i,resolved|;
 //   f{x,y}_<i>        per sphere, error over the mean |F_i,resolved|;
 // with the case's geometry, beta, n, gap (d), row angle, bend and load.
-// Prints per level the worst errors per geometry and gap.
+// Prints per level the worst errors per geometry and gap. --wall-record: the
+// same worst errors as CSV (level, geometry, beta, gap over d and over H,
+// totals, profile RMS), the material for an error model of `auto` that uses
+// the distance to walls and pores (calibration/data/level_error_near_walls.csv).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -26,6 +30,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include "scene_crosscheck.h"
 
@@ -41,6 +46,8 @@ int main(int argc, char** argv) {
   app.add_option("--table", table_path, "coefficient file (default: the built-in table)");
   app.add_option("--near-field", near_field_path, "near-field coupling file of levels 3-4, or off (default: built-in)");
   app.add_option("--label", label, "label of this table in the output");
+  std::string wall_record;
+  app.add_option("--wall-record", wall_record, "write the worst errors per level, geometry and gap (CSV)");
   CLI11_PARSE(app, argc, argv);
   try {
     const hsrod::ConfinementTable table =
@@ -54,12 +61,26 @@ int main(int argc, char** argv) {
     out << "label,level,case,geometry,beta,n,gap_over_d,row_angle_deg,bend_deg,load,quantity,resolved,model,error,"
            "error_of_magnitude\n";
     out.precision(8);
+    std::ofstream record;
+    if (!wall_record.empty()) {
+      record.open(wall_record);
+      record << "# hsrod_crosscheck_scenes --wall-record: largest |model / resolved - 1| of the totals (components "
+                "carrying >= 20 % of |F|) and largest per-sphere profile RMS, over the cases (row angles, loads, "
+                "rod lengths) of each level, geometry, beta and gap; table: "
+             << table.source() << "\nlevel,geometry,beta,gap_over_d,gap_over_H,cases,force_error,profile_rms\n";
+      record.precision(4);
+    }
     std::stringstream levels_in(levels);
     std::string level;
     while (std::getline(levels_in, level, ',')) {
       // worst |error| per (geometry, gap): totals (per component where the
       // component carries >= 20 % of |F|), profile RMS
       std::map<std::string, std::pair<double, double>> worst;
+      struct Cell {
+        double force = 0.0, rms = 0.0;
+        int cases = 0;
+      };
+      std::map<std::tuple<std::string, double, double>, Cell> cells;  // (geometry, beta, gap/d)
       for (const SceneCase& c : cases) {
         std::vector<Eigen::Vector2d> m;
         try {
@@ -81,9 +102,16 @@ int main(int argc, char** argv) {
         for (int k = 0; k < 2; ++k) {
           const double err = (tm[k] - tr[k]) / std::abs(tr[k]), err_mag = (tm[k] - tr[k]) / tr.norm();
           out << head << ",F_" << "xy"[k] << ',' << tr[k] << ',' << tm[k] << ',' << err << ',' << err_mag << '\n';
-          if (std::abs(tr[k]) >= 0.2 * tr.norm()) w.first = std::max(w.first, std::abs(err));
+          if (std::abs(tr[k]) >= 0.2 * tr.norm()) {
+            w.first = std::max(w.first, std::abs(err));
+            Cell& cell = cells[{c.geometry, c.beta, c.gap_over_d}];
+            cell.force = std::max(cell.force, std::abs(err));
+          }
         }
         const double rms = profile_rms(m, c.resolved);
+        Cell& cell = cells[{c.geometry, c.beta, c.gap_over_d}];
+        cell.rms = std::max(cell.rms, rms);
+        ++cell.cases;
         out << head << ",profile_rms,0,0," << rms << ',' << rms << '\n';
         w.second = std::max(w.second, rms);
         double mean = 0.0;
@@ -93,6 +121,15 @@ int main(int argc, char** argv) {
             out << head << ",f" << "xy"[k] << '_' << (i + 1) << ',' << c.resolved[i][k] << ',' << m[i][k] << ','
                 << (m[i][k] - c.resolved[i][k]) / mean << ',' << (m[i][k] - c.resolved[i][k]) / mean << '\n';
       }
+      if (record.is_open())
+        for (const auto& [key, cell] : cells)
+          if (std::get<0>(key) == "bent")  // the wide slit: no wall within reach
+            record << level << ",bent," << std::get<1>(key) << ",inf,inf," << cell.cases << ',' << cell.force << ','
+                   << cell.rms << '\n';
+          else
+            record << level << ',' << std::get<0>(key) << ',' << std::get<1>(key) << ',' << std::get<2>(key) << ','
+                   << std::get<2>(key) * std::get<1>(key) << ',' << cell.cases << ',' << cell.force << ',' << cell.rms
+                   << '\n';
       for (const auto& [group, w] : worst)
         std::printf("%-10s %-9s %-16s worst |error|: totals %6.1f %%, per-sphere profile RMS %6.1f %%\n", label.c_str(),
                     level.c_str(), group.c_str(), 100 * w.first, 100 * w.second);

@@ -187,7 +187,8 @@ def scene_section(build, tmp, md):
     and the per-sphere profiles of the rows at the wall (PNGs)."""
     out = os.path.join(tmp, "scenes.csv")
     log = subprocess.run([os.path.join(build, "hsrod_crosscheck_scenes"),
-                          os.path.join(DATA, "resolved_geometry_per_sphere.csv"), out],
+                          os.path.join(DATA, "resolved_geometry_per_sphere.csv"), out,
+                          "--wall-record", os.path.join(DATA, "level_error_near_walls.csv")],
                          capture_output=True, text=True, check=True).stdout
     rows = read(out)
     with open(os.path.join(DATA, "geometry_crosscheck.csv"), "w") as f:
@@ -206,7 +207,9 @@ def scene_section(build, tmp, md):
            "levels see the same channel (walls, pore cylinders, flow). Errors of the totals F_x (along the wall) "
            "and F_y (towards the wall) are model / resolved - 1 (shown where the component carries >= 20 % of "
            "|F|), profile = RMS over the spheres of |F_i,model - F_i,resolved| over the mean |F_i,resolved|. "
-           "Machine-readable: `calibration/data/geometry_crosscheck.csv`.", "", "```"]
+           "Machine-readable: `calibration/data/geometry_crosscheck.csv`; worst errors per level, geometry and gap "
+           "(for an error model of `auto` that uses the distance to walls): "
+           "`calibration/data/level_error_near_walls.csv`.", "", "```"]
     md += [l for l in log.splitlines() if not l.startswith("wrote")]
     md += ["```", "", "| case | load | level | F_x | F_y | profile |", "|---|---|---|---|---|---|"]
     keys = sorted({(r["case"], r["load"]) for r in rows})

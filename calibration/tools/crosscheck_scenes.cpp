@@ -121,15 +121,16 @@ int main(int argc, char** argv) {
             out << head << ",f" << "xy"[k] << '_' << (i + 1) << ',' << c.resolved[i][k] << ',' << m[i][k] << ','
                 << (m[i][k] - c.resolved[i][k]) / mean << ',' << (m[i][k] - c.resolved[i][k]) / mean << '\n';
       }
-      if (record.is_open())
-        for (const auto& [key, cell] : cells)
-          if (std::get<0>(key) == "bent")  // the wide slit: no wall within reach
-            record << level << ",bent," << std::get<1>(key) << ",inf,inf," << cell.cases << ',' << cell.force << ','
-                   << cell.rms << '\n';
-          else
-            record << level << ',' << std::get<0>(key) << ',' << std::get<1>(key) << ',' << std::get<2>(key) << ','
-                   << std::get<2>(key) * std::get<1>(key) << ',' << cell.cases << ',' << cell.force << ',' << cell.rms
-                   << '\n';
+      for (const auto& [key, cell] : cells) {
+        if (!record.is_open()) break;
+        const auto& [geometry, beta, gap] = key;
+        record << level << ',' << geometry << ',' << beta << ',';
+        if (geometry == "bent")  // the wide slit: no wall within reach
+          record << "inf,inf,";
+        else
+          record << gap << ',' << gap * beta << ',';
+        record << cell.cases << ',' << cell.force << ',' << cell.rms << '\n';
+      }
       for (const auto& [group, w] : worst)
         std::printf("%-10s %-9s %-16s worst |error|: totals %6.1f %%, per-sphere profile RMS %6.1f %%\n", label.c_str(),
                     level.c_str(), group.c_str(), 100 * w.first, 100 * w.second);

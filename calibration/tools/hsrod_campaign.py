@@ -8,7 +8,11 @@ touching spheres, sphere pairs at a spacing), each
   - dragged through fluid at rest  (load "friction": lab velocity -U e), and
   - held in plane Poiseuille flow   (load "driving": gap-mean velocity U e),
 
-over a list of beta = d/H and a mesh series (cells per diameter). The load
+over a list of beta = d/H and a mesh series (cells per diameter); a series
+may also be a bent (C-shaped) rod in the slit or a rigid row near a side
+wall or beside a pore cylinder of a channel (series key "geometry", see
+GEOMETRIES below: lab-frame drag towards the wall, held in the channel
+flow). The load
 direction e is at 45 degrees to the row (0 for a lone sphere): Stokes flow is
 linear and a wide slit isotropic in its plane, so one run gives the parallel
 (x) and the perpendicular (y) response of every sphere on the same mesh.

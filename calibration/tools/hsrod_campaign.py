@@ -310,14 +310,44 @@ def parse_loads(case, spec):
     return spheres, ex_note
 
 
+def stop_group(proc, grace_s=10.0):
+    """Stop the case's process group (Allrun and the solver it started) and
+    wait until every member is gone: the shell can exit before the solver,
+    which would go on writing into a case directory a resumed run rebuilds."""
+    try:
+        os.killpg(proc.pid, signal.SIGTERM)
+    except ProcessLookupError:
+        return
+    proc.wait()
+    t0 = time.time()
+    while True:
+        try:
+            os.killpg(proc.pid, signal.SIGKILL if time.time() - t0 > grace_s else 0)
+        except ProcessLookupError:
+            return
+        time.sleep(0.05)
+
+
+def fresh_dir(path):
+    """An empty directory at `path` (a leftover writer may still add files
+    while it is removed: retry)."""
+    for _ in range(50):
+        shutil.rmtree(path, ignore_errors=True)
+        try:
+            os.makedirs(path)
+            return
+        except FileExistsError:
+            time.sleep(0.1)
+    raise RuntimeError("cannot make a fresh case directory %s" % path)
+
+
 def run_case(spec, out, solver, keep):
     case = os.path.join(out, "cases", spec["id"])
     attempts = []
     for relax in (spec["control"].get("relax_U", 0.95), 0.9, 0.8):
-        shutil.rmtree(case, ignore_errors=True)
+        fresh_dir(case)
         scene = scene_of(spec)
         scene["control"]["relax_U"] = relax
-        os.makedirs(case)
         with open(os.devnull, "w") as dn:
             old, sys.stdout = sys.stdout, dn
             try:
@@ -332,8 +362,7 @@ def run_case(spec, out, solver, keep):
         try:
             proc.communicate()
         except BaseException:
-            os.killpg(proc.pid, signal.SIGTERM)
-            proc.wait()
+            stop_group(proc)
             raise
         wall = time.time() - t0
         c1 = os.times()

@@ -97,7 +97,12 @@ int main(int argc, char** argv) {
         char head[512];
         std::snprintf(head, sizeof head, "%s,%s,%s,%s,%g,%zu,%g,%g,%g,%s", label.c_str(), level.c_str(), c.name.c_str(),
                       c.geometry.c_str(), c.beta, m.size(), c.gap_over_d, c.row_angle_deg, c.bend_deg, c.load.c_str());
-        std::string group = c.geometry + (c.geometry == "bent" ? "" : " gap " + std::to_string(c.gap_over_d).substr(0, 4) + " d");
+        char group_name[96];
+        if (c.geometry == "bent")
+          std::snprintf(group_name, sizeof group_name, "bent b%.2f", c.beta);
+        else
+          std::snprintf(group_name, sizeof group_name, "%s b%.2f gap %.1f d", c.geometry.c_str(), c.beta, c.gap_over_d);
+        const std::string group = group_name;
         auto& w = worst[group];
         for (int k = 0; k < 2; ++k) {
           const double err = (tm[k] - tr[k]) / std::abs(tr[k]), err_mag = (tm[k] - tr[k]) / tr.norm();
@@ -132,7 +137,7 @@ int main(int argc, char** argv) {
         record << cell.cases << ',' << cell.force << ',' << cell.rms << '\n';
       }
       for (const auto& [group, w] : worst)
-        std::printf("%-10s %-9s %-16s worst |error|: totals %6.1f %%, per-sphere profile RMS %6.1f %%\n", label.c_str(),
+        std::printf("%-10s %-9s %-22s worst |error|: totals %6.1f %%, per-sphere profile RMS %6.1f %%\n", label.c_str(),
                     level.c_str(), group.c_str(), 100 * w.first, 100 * w.second);
     }
     std::printf("wrote %s\n", out_path.c_str());

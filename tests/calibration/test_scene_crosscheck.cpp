@@ -102,8 +102,8 @@ TEST(SceneCrossCheck, BentRodsAtLevelsThreeAndFourWithinTenPercent) {
     int n = 0;
     const auto [tot, rms] = worst(level, [](const SceneCase& c) { return c.geometry == "bent"; }, &n);
     ASSERT_GE(n, 2) << "no bent-rod cases in the table";
-    EXPECT_LT(tot, 0.10) << level;  // measured: 4.4 / 4.5 % (C-shaped N = 10, beta 0.3)
-    EXPECT_LT(rms, 0.10) << level;  // measured: 4.6 / 5.2 %
+    EXPECT_LT(tot, 0.10) << level;  // measured: 6.3 / 6.7 % (C- and L-shaped N = 10, beta 0.3)
+    EXPECT_LT(rms, 0.10) << level;  // measured: 4.6 / 5.4 %
   }
 }
 
@@ -119,9 +119,10 @@ TEST(SceneCrossCheck, LevelFourWithinTenPercentAboutOneGapHeightFromTheWall) {
 // NOT met (reported in calibration/validation/crosscheck.md, section "Near
 // walls and pores"): within 1.5 d of the side wall or a pore cylinder the
 // levels miss the wall's reflection of the flow a row pushes towards it.
-// Measured at beta 0.3, rows of 5 (gap 0.5 d / 1.5 d), worst totals:
-// level 2 -54 / -29 %, level 3 -54 / -28 %, level 4 -37 / -15 % (wall-normal
-// friction of a row parallel to the wall); pore: level 4 -28 / -11 %.
+// Measured at beta 0.3, rows of 5 and 10 (gap 0.5 d / 1.5 d), worst totals:
+// level 2 -54 / -29 %, level 3 -54 / -28 %, level 4 -40 / -15 % (wall-normal
+// friction of a row parallel to the wall); pore: level 4 -29 / -11 %; at
+// beta 0.15, gap 0.5 d: level 3 -65 %, level 4 -57 %.
 TEST(SceneCrossCheck, DISABLED_LevelsTwoToFourWithinTenPercentNearWallsAndPores) {
   for (const char* level : {"local", "nonlocal", "twoway"}) {
     int n = 0;

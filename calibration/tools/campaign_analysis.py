@@ -54,8 +54,10 @@ def load_results(out):
         with open(f) as fh:
             r = json.load(fh)
         # straight rows in the wide slit only: bent rods and rows near walls
-        # and pores (spec "geometry") are read by geometry_cases.py
-        if r.get("schema") == "hsrod-campaign-case 1" and "geometry" not in r.get("spec", {}):
+        # and pores (spec "geometry") are read by geometry_cases.py; box-size
+        # studies (role "box": one row in several boxes) are not fit data
+        spec = r.get("spec", {})
+        if r.get("schema") == "hsrod-campaign-case 1" and "geometry" not in spec and spec.get("role") != "box":
             r["source"] = repo_path(f)
             res.append(r)
     if os.path.exists(os.path.join(out, RECORD_CSV)):

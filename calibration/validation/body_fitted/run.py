@@ -41,6 +41,12 @@ import hsrod_campaign  # noqa: E402
 PLAN = os.path.join(ROOT, "calibration", "campaign", "plan_geometry.json")
 RESULTS = os.path.join(ROOT, "calibration", "campaign", "geometry", "results")
 UM = 1e-6
+# Pseudo-time iterations per surface level: levels 2-3 meet the residual
+# tolerances in ~300 iterations; on level 4 the residuals stall above them
+# while the force is steady to 1e-7 after ~300 (measured), so level 4 stops
+# at 400 and is judged by the force change over the last 100 iterations.
+END_TIME = {4: 400}
+FORCE_CHANGE_TOLERANCE = 1e-5
 
 
 def foam(path, obj, body, cls="dictionary"):
@@ -182,7 +188,7 @@ mergeTolerance 1e-6;
 startFrom latestTime;
 startTime 0;
 stopAt endTime;
-endTime 3000;
+endTime %d;
 deltaT 1;
 writeControl timeStep;
 writeInterval 100000;
@@ -206,7 +212,7 @@ functions
         log false;
     }
 }
-""" % (rho, hsrod_case.vec(centre)))
+""" % (END_TIME.get(level, 3000), rho, hsrod_case.vec(centre)))
     foam(os.path.join(case, "system", "fvSchemes"), "fvSchemes",
          "ddtSchemes { default steadyState; }\ngradSchemes { default Gauss linear; }\n"
          "divSchemes { default none; div(phi,U) bounded Gauss linear; div((nuEff*dev2(T(grad(U))))) Gauss linear; }\n"
@@ -259,36 +265,44 @@ def read_forces(case):
     return rows
 
 
-def body_fitted(spec, level, work, env):
+def body_fitted(spec, level, work, env, reuse=False):
     case = os.path.join(work, "%s_L%d" % (spec["id"], level))
-    shutil.rmtree(case, ignore_errors=True)
-    spheres, scene = write_case(case, spec, level)
-    cpu = 0.0
-    for cmd, log in ((["blockMesh"], "log.blockMesh"), (["snappyHexMesh", "-overwrite"], "log.snappyHexMesh"),
-                     (["transformPoints", "-scale", "(1e-6 1e-6 1e-6)"], "log.transformPoints")):
-        _, c, _ = run(cmd, case, env, log)
+    if reuse and os.path.exists(os.path.join(case, "log.checkMesh")) and read_forces(case):
+        # a run stopped by hand after its force had settled (the log of the
+        # stopped solver is not kept; its CPU time is not known)
+        spheres, scene = write_case(os.path.join(work, "scratch"), spec, level)
+        cm = open(os.path.join(case, "log.checkMesh")).read()
+        log, cpu, mesh_cpu = "", float("nan"), float("nan")
+    else:
+        shutil.rmtree(case, ignore_errors=True)
+        spheres, scene = write_case(case, spec, level)
+        cpu = 0.0
+        for cmd, logname in ((["blockMesh"], "log.blockMesh"), (["snappyHexMesh", "-overwrite"], "log.snappyHexMesh"),
+                             (["transformPoints", "-scale", "(1e-6 1e-6 1e-6)"], "log.transformPoints")):
+            _, c, _ = run(cmd, case, env, logname)
+            cpu += c
+        cm, _, _ = run(["checkMesh"], case, env, "log.checkMesh")
+        mesh_cpu = cpu
+        log, c, wall = run(["simpleFoam"], case, env, "log.simpleFoam")
         cpu += c
-    cm, _, _ = run(["checkMesh"], case, env, "log.checkMesh")
     cells = int(re.search(r"cells:\s+(\d+)", cm).group(1))
     nonorth = float(re.search(r"non-orthogonality Max: ([\d.]+)", cm).group(1))
-    mesh_cpu = cpu
-    log, c, wall = run(["simpleFoam"], case, env, "log.simpleFoam")
-    cpu += c
     hist = read_forces(case)
     iters = len(hist)
     F = hist[-1][1]
     # convergence: relative change of |F| over the last 100 iterations
     F100 = hist[-101][1] if len(hist) > 101 else hist[0][1]
     change = math.sqrt(sum((a - b) ** 2 for a, b in zip(F, F100))) / math.sqrt(sum(a * a for a in F))
-    converged = "SIMPLE solution converged" in log
+    converged = "SIMPLE solution converged" in log or change < FORCE_CHANGE_TOLERANCE
     z0 = 3 * math.pi * scene["fluid"]["mu"] * scene["d"] * scene["U"]
     out = {"id": spec["id"], "surface_level": level, "cells_at_surface_per_d": 3 * 2 ** level, "cells": cells,
            "max_non_orthogonality_deg": nonorth, "iterations": iters, "converged": converged,
-           "force_change_last_100_it": change, "cpu_s_mesh": round(mesh_cpu, 1), "cpu_s": round(cpu, 1),
+           "force_change_last_100_it": change, "cpu_s_mesh": None if math.isnan(mesh_cpu) else round(mesh_cpu, 1),
+           "cpu_s": None if math.isnan(cpu) else round(cpu, 1),
            "F_over_3pi_mu_d_U": [x / z0 for x in F]}
-    print("  body-fitted %s level %d: %d cells, %d it (converged %s, change %.1e), F/(3 pi mu d U) = %s, %.0f s CPU"
-          % (spec["id"], level, cells, iters, converged, change, ["%.4f" % x for x in out["F_over_3pi_mu_d_U"]], cpu),
-          flush=True)
+    print("  body-fitted %s level %d: %d cells, %d it (converged %s, change %.1e), F/(3 pi mu d U) = %s, %s s CPU"
+          % (spec["id"], level, cells, iters, converged, change, ["%.4f" % x for x in out["F_over_3pi_mu_d_U"]],
+             out["cpu_s"]), flush=True)
     return out
 
 
@@ -310,6 +324,7 @@ def main():
     ap.add_argument("--gaps", type=float, nargs="+", default=[0.5, 1.5])
     ap.add_argument("--loads", nargs="+", default=["friction", "driving"])
     ap.add_argument("--table-only", action="store_true", help="refresh the IBM side and the table, run nothing")
+    ap.add_argument("--reuse", action="store_true", help="read a finished or stopped run of a case instead of rerunning it")
     a = ap.parse_args()
     if a.table_only:
         a.levels = []
@@ -328,7 +343,7 @@ def main():
                                                   "dragged at -U (cos 45, sin 45): along -x and towards the wall"
                                                   if load == "friction" else "held in the channel flow (mean U along x)"))
             for lvl in a.levels:
-                entry["body_fitted"][str(lvl)] = body_fitted(spec6, lvl, a.work, env)
+                entry["body_fitted"][str(lvl)] = body_fitted(spec6, lvl, a.work, env, a.reuse)
                 with open(out_path, "w") as f:
                     json.dump(results, f, indent=1)
             for (ld, n_d), spec in sorted(specs.items()):
@@ -352,9 +367,10 @@ def write_table(results):
         bf = sorted(e["body_fitted"].items(), key=lambda kv: int(kv[0]))
         ib = sorted(e["ibm"].items(), key=lambda kv: int(kv[0]))
         for lvl, r in bf:
-            lines.append("| %s | body-fitted, level %s (d/%d at the surface)%s | %d | %.0f | %.4f | %.4f |" % (
+            lines.append("| %s | body-fitted, level %s (d/%d at the surface)%s | %d | %s | %.4f | %.4f |" % (
                 key, lvl, r["cells_at_surface_per_d"], "" if r["converged"] else " (not converged: change %.1e)"
-                % r["force_change_last_100_it"], r["cells"], r["cpu_s"], r["F_over_3pi_mu_d_U"][0], r["F_over_3pi_mu_d_U"][1]))
+                % r["force_change_last_100_it"], r["cells"], "-" if r["cpu_s"] is None else "%.0f" % r["cpu_s"],
+                r["F_over_3pi_mu_d_U"][0], r["F_over_3pi_mu_d_U"][1]))
         for n_d, r in ib:
             lines.append("| %s | rodIbFoam, d/%s | %d | %.0f | %.4f | %.4f |" % (
                 key, n_d, r["cells"], r["cpu_s"], r["F_over_3pi_mu_d_U"][0], r["F_over_3pi_mu_d_U"][1]))

@@ -38,7 +38,7 @@ SceneCase straight_row_in_slit(const std::string& load, int n, double beta) {
   return c;
 }
 
-TEST(SceneCrossCheck, StraightRowInTheSlitEqualsTheRowCrossCheck) {
+TEST(calibration_SceneCrossCheck, StraightRowInTheSlitEqualsTheRowCrossCheck) {
   const auto table = hsrod::ConfinementTable::default_table();
   const double c45 = std::sqrt(0.5);
   for (const char* level : {"isotropic", "local", "nonlocal", "twoway"}) {
@@ -56,7 +56,7 @@ TEST(SceneCrossCheck, StraightRowInTheSlitEqualsTheRowCrossCheck) {
   }
 }
 
-TEST(SceneCrossCheck, ResolvedRowsAlongTheWallHeldInFlowAreMirrorSymmetric) {
+TEST(calibration_SceneCrossCheck, ResolvedRowsAlongTheWallHeldInFlowAreMirrorSymmetric) {
   const auto cases = hsrod::calib::read_scene_cases(kData + "resolved_geometry_per_sphere.csv");
   int checked = 0;
   for (const SceneCase& c : cases) {
@@ -97,7 +97,7 @@ std::pair<double, double> worst(const std::string& level, Take take, int* count)
   return {tot, rms};
 }
 
-TEST(SceneCrossCheck, BentRodsAtLevelsThreeAndFourWithinTenPercent) {
+TEST(calibration_SceneCrossCheck, BentRodsAtLevelsThreeAndFourWithinTenPercent) {
   for (const char* level : {"nonlocal", "twoway"}) {
     int n = 0;
     const auto [tot, rms] = worst(level, [](const SceneCase& c) { return c.geometry == "bent"; }, &n);
@@ -107,7 +107,7 @@ TEST(SceneCrossCheck, BentRodsAtLevelsThreeAndFourWithinTenPercent) {
   }
 }
 
-TEST(SceneCrossCheck, LevelFourWithinTenPercentAboutOneGapHeightFromTheWall) {
+TEST(calibration_SceneCrossCheck, LevelFourWithinTenPercentAboutOneGapHeightFromTheWall) {
   int n = 0;
   const auto [tot, rms] =
       worst("twoway", [](const SceneCase& c) { return c.geometry == "wall" && c.gap_over_d * c.beta >= 0.85; }, &n);
@@ -123,7 +123,7 @@ TEST(SceneCrossCheck, LevelFourWithinTenPercentAboutOneGapHeightFromTheWall) {
 // level 2 -54 / -29 %, level 3 -54 / -28 %, level 4 -40 / -15 % (wall-normal
 // friction of a row parallel to the wall); pore: level 4 -29 / -11 %; at
 // beta 0.15, gap 0.5 d: level 3 -65 %, level 4 -57 %.
-TEST(SceneCrossCheck, DISABLED_LevelsTwoToFourWithinTenPercentNearWallsAndPores) {
+TEST(calibration_SceneCrossCheck, DISABLED_LevelsTwoToFourWithinTenPercentNearWallsAndPores) {
   for (const char* level : {"local", "nonlocal", "twoway"}) {
     int n = 0;
     const auto [tot, rms] = worst(level, [](const SceneCase& c) { return c.geometry != "bent"; }, &n);

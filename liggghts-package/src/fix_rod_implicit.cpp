@@ -225,7 +225,7 @@ void FixRodImplicit::initial_integrate(int) {
     // The rod's structures live from step to step (no allocation per step).
     RodScratch &scratch = scratch_by_rod_[entry.first];
     hsrod::OverdampedRod &rod = scratch.rod;
-    update_overdamped_rod(spheres, bond_set, rod);
+    update_overdamped_rod(spheres, bond_set, rod, scratch.stiffnesses);
     // Wall friction is linearised about the velocities of the last step
     // (this fix set them: v = dx/dt).
     rod.velocities.resize(n);

@@ -18,6 +18,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 #include "fix.h"
 
 #include "rod_accounting.h"
+#include "rod_assembly.h"
 
 #include "dynamics/guarded_step.h"
 #include "dynamics/overdamped_rod_step.h"
@@ -101,6 +102,7 @@ class FixRodImplicit : public Fix {
     std::vector<Eigen::Vector3d> before;  // positions at the step's start [m]
     hsrod::GuardedStepReport report;      // guarded step
     hsrod::OverdampedStepResult result;   // unguarded step
+    BondStiffnessCache stiffnesses;       // the bonds' stiffnesses while their inputs stay the same
   };
   std::map<int, RodScratch> scratch_by_rod_;
   // Cost model of the current run (printed by post_run): wall times of the

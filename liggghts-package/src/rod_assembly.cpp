@@ -29,8 +29,16 @@ hsrod::OverdampedRod LAMMPS_NS::overdamped_rod(const std::vector<GatheredSphere>
   return rod;
 }
 
-void LAMMPS_NS::update_overdamped_rod(const std::vector<GatheredSphere> &spheres, const hsrod::RodBondSet &bonds,
-                                      hsrod::OverdampedRod &rod) {
+namespace {
+
+bool same_bond_set(const hsrod::RodBondSet &a, const hsrod::RodBondSet &b) {
+  return a.youngs_modulus == b.youngs_modulus && a.poisson_ratio == b.poisson_ratio &&
+         a.damping_ratio == b.damping_ratio && a.bond_radius_ratio == b.bond_radius_ratio;
+}
+
+// Both public forms: `cache` null rebuilds every stiffness.
+void assemble_overdamped_rod(const std::vector<GatheredSphere> &spheres, const hsrod::RodBondSet &bonds,
+                             hsrod::OverdampedRod &rod, BondStiffnessCache *cache) {
   const int n = static_cast<int>(spheres.size());
   rod.positions.resize(n);
   rod.orientations.resize(n);
@@ -60,6 +68,11 @@ void LAMMPS_NS::update_overdamped_rod(const std::vector<GatheredSphere> &spheres
     return false;
   };
   rod.bonds.clear();
+  const bool cache_valid = cache && same_bond_set(cache->bond_set, bonds);
+  if (cache && !cache_valid) {
+    cache->bond_set = bonds;
+    cache->entries.clear();
+  }
   for (int k = 0; k < n; k++) {
     const std::vector<GatheredBond> &stored = spheres[k].bonds;
     for (std::size_t r = 0; r < stored.size(); r++) {
@@ -75,8 +88,32 @@ void LAMMPS_NS::update_overdamped_rod(const std::vector<GatheredSphere> &spheres
       bond.j = partner;
       bond.rest.rest_vector_in_frame_i = b.rest_vector;
       bond.rest.rest_relative_rotation = b.rest_rotation;
-      bond.stiffness = bonds.stiffness(spheres[k].radius, spheres[bond.j].radius, bond.rest.rest_length());
+      const double radius_i = spheres[k].radius, radius_j = spheres[bond.j].radius;
+      const double rest_length = bond.rest.rest_length();
+      const std::size_t m = rod.bonds.size();
+      if (cache && m < cache->entries.size() && cache->entries[m].radius_i == radius_i &&
+          cache->entries[m].radius_j == radius_j && cache->entries[m].rest_length == rest_length) {
+        bond.stiffness = cache->entries[m].stiffness;
+      } else {
+        bond.stiffness = bonds.stiffness(radius_i, radius_j, rest_length);
+        if (cache) {
+          if (cache->entries.size() <= m) cache->entries.resize(m + 1);
+          cache->entries[m] = {radius_i, radius_j, rest_length, bond.stiffness};
+        }
+      }
       rod.bonds.push_back(bond);
     }
   }
+}
+
+}  // namespace
+
+void LAMMPS_NS::update_overdamped_rod(const std::vector<GatheredSphere> &spheres, const hsrod::RodBondSet &bonds,
+                                      hsrod::OverdampedRod &rod) {
+  assemble_overdamped_rod(spheres, bonds, rod, nullptr);
+}
+
+void LAMMPS_NS::update_overdamped_rod(const std::vector<GatheredSphere> &spheres, const hsrod::RodBondSet &bonds,
+                                      hsrod::OverdampedRod &rod, BondStiffnessCache &cache) {
+  assemble_overdamped_rod(spheres, bonds, rod, &cache);
 }

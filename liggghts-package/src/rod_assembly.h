@@ -36,6 +36,23 @@ hsrod::OverdampedRod overdamped_rod(const std::vector<GatheredSphere> &spheres, 
 void update_overdamped_rod(const std::vector<GatheredSphere> &spheres, const hsrod::RodBondSet &bonds,
                            hsrod::OverdampedRod &rod);
 
+// The inputs of each bond's stiffness at the last update, in the order of the
+// rod's bonds: a bond whose radii [m], rest length [m] and bond set are the
+// same as at the same place last time keeps its stiffness (the same numbers:
+// the stiffness is a function of these alone) instead of recomputing it.
+struct BondStiffnessCache {
+  struct Entry {
+    double radius_i = 0.0, radius_j = 0.0, rest_length = 0.0;  // [m]
+    hsrod::BeamBondStiffness stiffness;
+  };
+  hsrod::RodBondSet bond_set;
+  std::vector<Entry> entries;
+};
+// update_overdamped_rod with the stiffnesses taken from `cache` where their
+// inputs are unchanged (a rod step whose topology and radii stay the same).
+void update_overdamped_rod(const std::vector<GatheredSphere> &spheres, const hsrod::RodBondSet &bonds,
+                           hsrod::OverdampedRod &rod, BondStiffnessCache &cache);
+
 }  // namespace LAMMPS_NS
 
 #endif

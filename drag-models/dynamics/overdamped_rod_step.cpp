@@ -668,19 +668,15 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   };
   // Bonds: loads at y_n and their Jacobian (K = -d loads / dy).
   BondLoads loads;
-  BondJacobian jacobian;
   const auto add_chain_bond = [&](const RodBond& b) {
-    beam_bond_loads_and_jacobian(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j], rod.orientations[b.j],
-                                 b.rest, b.stiffness, loads, jacobian);
-    rhs.segment<6>(6 * b.i) += loads.head<6>();
-    rhs.segment<6>(6 * b.j) += loads.tail<6>();
     // A chain bond joins k and k+1 in either order.
     Matrix6d& ij = b.j == b.i + 1 ? w.upper[b.i] : w.lower[b.i];
     Matrix6d& ji = b.j == b.i + 1 ? w.lower[b.j] : w.upper[b.j];
-    w.diagonal[b.i] += -jacobian.block<6, 6>(0, 0);
-    ij += -jacobian.block<6, 6>(0, 6);
-    ji += -jacobian.block<6, 6>(6, 0);
-    w.diagonal[b.j] += -jacobian.block<6, 6>(6, 6);
+    beam_bond_loads_and_add_stiffness(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j],
+                                      rod.orientations[b.j], b.rest, b.stiffness, loads, w.diagonal[b.i], ij, ji,
+                                      w.diagonal[b.j]);
+    rhs.segment<6>(6 * b.i) += loads.head<6>();
+    rhs.segment<6>(6 * b.j) += loads.tail<6>();
   };
   if (eliminate_in_pass) {
     std::size_t next_wall = 0;  // wall_contacts are in sphere order

@@ -52,10 +52,18 @@ Eigen::Matrix3d so3_left_jacobian_inverse(const Eigen::Vector3d& v) {
   return Eigen::Matrix3d::Identity() - 0.5 * k + c * k * k;
 }
 
-void beam_bond_loads_and_jacobian(const Eigen::Vector3d& x_i, const Eigen::Quaterniond& q_i,
-                                  const Eigen::Vector3d& x_j, const Eigen::Quaterniond& q_j,
-                                  const BeamBondRest& rest, const BeamBondStiffness& k, BondLoads& loads,
-                                  BondJacobian& jacobian) {
+namespace {
+
+// The Jacobian's 3x3 pieces (the blocks of rows (F_i, T_i, F_j, T_j) are
+// sums and negations of these).
+struct BondJacobianPieces {
+  Eigen::Matrix3d translation, df_dphi_i, df_dphi_j, dc_dx_i, dm_dphi_i, dc_dphi_i, dm_dphi_j, dc_dphi_j;
+};
+
+inline void loads_and_jacobian_pieces(const Eigen::Vector3d& x_i, const Eigen::Quaterniond& q_i,
+                                      const Eigen::Vector3d& x_j, const Eigen::Quaterniond& q_j,
+                                      const BeamBondRest& rest, const BeamBondStiffness& k, BondLoads& loads,
+                                      BondJacobianPieces& p) {
   // Loads: the same operations as evaluate_beam_bond without dashpots.
   const Eigen::Quaterniond q_rel = q_i.conjugate() * q_j * rest.rest_relative_rotation.conjugate();
   const Eigen::Vector3d theta_body = rotation_vector(q_rel);
@@ -93,20 +101,40 @@ void beam_bond_loads_and_jacobian(const Eigen::Vector3d& x_i, const Eigen::Quate
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   const Eigen::Matrix3d axis_outer = axis * axis.transpose();
   const double axial_excess = k.axial - k.shear, twist_excess = k.twisting - k.bending;
-  const Eigen::Matrix3d translation = k.shear * identity + axial_excess * axis_outer;  // -dF/dx_j = dF/dx_i
+  p.translation = k.shear * identity + axial_excess * axis_outer;  // -dF/dx_j = dF/dx_i
   const Eigen::Matrix3d force_rotation =
-      translation - (axial_excess / rest_length) * (axial * identity + axis * mismatch.transpose());
+      p.translation - (axial_excess / rest_length) * (axial * identity + axis * mismatch.transpose());
   const Eigen::Matrix3d moment_theta = k.bending * identity + twist_excess * axis_outer;
   const Eigen::Matrix3d moment_axis = (twist_excess / rest_length) * (twist * identity + axis * theta.transpose());
-  const Eigen::Matrix3d df_dphi_i = force_rotation * de_dphi_i;
-  const Eigen::Matrix3d df_dphi_j = force_rotation * de_dphi_j;
-  const Eigen::Matrix3d dm_dphi_i = -moment_theta * jr_inv + moment_axis * de_dphi_i;
-  const Eigen::Matrix3d dm_dphi_j = moment_theta * jl_inv + moment_axis * de_dphi_j;
+  p.df_dphi_i = force_rotation * de_dphi_i;
+  p.df_dphi_j = force_rotation * de_dphi_j;
+  p.dm_dphi_i = -moment_theta * jr_inv + moment_axis * de_dphi_i;
+  p.dm_dphi_j = moment_theta * jl_inv + moment_axis * de_dphi_j;
   // Couple -1/2 bond x F: d = 1/2 [F]x d bond - 1/2 [bond]x d F.
   const Eigen::Matrix3d half_bond = 0.5 * cross_matrix(bond), half_force = 0.5 * cross_matrix(force_on_j);
-  const Eigen::Matrix3d dc_dx_i = -half_force - half_bond * translation;
-  const Eigen::Matrix3d dc_dphi_i = -half_bond * df_dphi_i;
-  const Eigen::Matrix3d dc_dphi_j = -half_bond * df_dphi_j;
+  p.dc_dx_i = -half_force - half_bond * p.translation;
+  p.dc_dphi_i = -half_bond * p.df_dphi_i;
+  p.dc_dphi_j = -half_bond * p.df_dphi_j;
+}
+
+// out -= m on the 3x3 block at (row, col) of a 6x6 block: out + (-m) in
+// IEEE arithmetic, the same as adding the negated Jacobian's block.
+inline void subtract_block(Eigen::Matrix<double, 6, 6>& out, int row, int col, const Eigen::Matrix3d& m) {
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) out(row + r, col + c) -= m(r, c);
+}
+
+}  // namespace
+
+void beam_bond_loads_and_jacobian(const Eigen::Vector3d& x_i, const Eigen::Quaterniond& q_i,
+                                  const Eigen::Vector3d& x_j, const Eigen::Quaterniond& q_j,
+                                  const BeamBondRest& rest, const BeamBondStiffness& k, BondLoads& loads,
+                                  BondJacobian& jacobian) {
+  BondJacobianPieces p;
+  loads_and_jacobian_pieces(x_i, q_i, x_j, q_j, rest, k, loads, p);
+  const Eigen::Matrix3d &translation = p.translation, &df_dphi_i = p.df_dphi_i, &df_dphi_j = p.df_dphi_j,
+                        &dc_dx_i = p.dc_dx_i, &dm_dphi_i = p.dm_dphi_i, &dc_dphi_i = p.dc_dphi_i,
+                        &dm_dphi_j = p.dm_dphi_j, &dc_dphi_j = p.dc_dphi_j;
   // Rows (F_i, T_i, F_j, T_j) = (-F, M + c, F, -M + c); dc/dx_j = -dc/dx_i.
   put_block(jacobian, 0, 0, translation, true);
   put_block(jacobian, 0, 3, df_dphi_i, true);
@@ -124,6 +152,32 @@ void beam_bond_loads_and_jacobian(const Eigen::Vector3d& x_i, const Eigen::Quate
   put_block(jacobian, 9, 3, -dm_dphi_i + dc_dphi_i);
   put_block(jacobian, 9, 6, dc_dx_i, true);
   put_block(jacobian, 9, 9, -dm_dphi_j + dc_dphi_j);
+}
+
+void beam_bond_loads_and_add_stiffness(const Eigen::Vector3d& x_i, const Eigen::Quaterniond& q_i,
+                                       const Eigen::Vector3d& x_j, const Eigen::Quaterniond& q_j,
+                                       const BeamBondRest& rest, const BeamBondStiffness& k, BondLoads& loads,
+                                       Eigen::Matrix<double, 6, 6>& k_ii, Eigen::Matrix<double, 6, 6>& k_ij,
+                                       Eigen::Matrix<double, 6, 6>& k_ji, Eigen::Matrix<double, 6, 6>& k_jj) {
+  BondJacobianPieces p;
+  loads_and_jacobian_pieces(x_i, q_i, x_j, q_j, rest, k, loads, p);
+  // K = -J block by block (the blocks of beam_bond_loads_and_jacobian).
+  subtract_block(k_ii, 0, 0, -p.translation);
+  subtract_block(k_ii, 0, 3, -p.df_dphi_i);
+  subtract_block(k_ii, 3, 0, p.dc_dx_i);
+  subtract_block(k_ii, 3, 3, p.dm_dphi_i + p.dc_dphi_i);
+  subtract_block(k_ij, 0, 0, p.translation);
+  subtract_block(k_ij, 0, 3, -p.df_dphi_j);
+  subtract_block(k_ij, 3, 0, -p.dc_dx_i);
+  subtract_block(k_ij, 3, 3, p.dm_dphi_j + p.dc_dphi_j);
+  subtract_block(k_ji, 0, 0, p.translation);
+  subtract_block(k_ji, 0, 3, p.df_dphi_i);
+  subtract_block(k_ji, 3, 0, p.dc_dx_i);
+  subtract_block(k_ji, 3, 3, -p.dm_dphi_i + p.dc_dphi_i);
+  subtract_block(k_jj, 0, 0, -p.translation);
+  subtract_block(k_jj, 0, 3, p.df_dphi_j);
+  subtract_block(k_jj, 3, 0, -p.dc_dx_i);
+  subtract_block(k_jj, 3, 3, -p.dm_dphi_j + p.dc_dphi_j);
 }
 
 }  // namespace hsrod

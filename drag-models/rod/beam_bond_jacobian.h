@@ -34,6 +34,16 @@ void beam_bond_loads_and_jacobian(const Eigen::Vector3d& x_i, const Eigen::Quate
                                   const BeamBondRest& rest, const BeamBondStiffness& stiffness, BondLoads& loads,
                                   BondJacobian& jacobian);
 
+// The same loads, and the stiffness K = -jacobian added block by block to the
+// 6x6 blocks of sphere rows/columns (i, i), (i, j), (j, i), (j, j) without
+// forming the 12x12 matrix (the same numbers as adding -jacobian's blocks).
+void beam_bond_loads_and_add_stiffness(const Eigen::Vector3d& x_i, const Eigen::Quaterniond& q_i,
+                                       const Eigen::Vector3d& x_j, const Eigen::Quaterniond& q_j,
+                                       const BeamBondRest& rest, const BeamBondStiffness& stiffness,
+                                       BondLoads& loads, Eigen::Matrix<double, 6, 6>& k_ii,
+                                       Eigen::Matrix<double, 6, 6>& k_ij, Eigen::Matrix<double, 6, 6>& k_ji,
+                                       Eigen::Matrix<double, 6, 6>& k_jj);
+
 // Left Jacobian of SO(3), J_l(v) = I + (1 - cos t)/t^2 [v]x + (t - sin t)/t^3 [v]x^2, t = |v|,
 // and its inverse J_l^-1(v) = I - [v]x / 2 + (1/t^2 - (1 + cos t)/(2 t sin t)) [v]x^2 (t < pi).
 Eigen::Matrix3d so3_left_jacobian(const Eigen::Vector3d& v);

@@ -40,7 +40,7 @@ StaggeredField::StaggeredField(const MacGrid& grid, std::vector<double> u_ext,
 namespace {
 
 // Catmull-Rom weights of the nodes -1, 0, 1, 2 at t in [0, 1], and their derivatives.
-void catmull_rom(double t, double w[4], double dw[4]) {
+inline void catmull_rom(double t, double w[4], double dw[4]) {
   const double t2 = t * t, t3 = t2 * t;
   w[0] = 0.5 * (-t3 + 2.0 * t2 - t);
   w[1] = 0.5 * (3.0 * t3 - 5.0 * t2 + 2.0);
@@ -72,13 +72,18 @@ void StaggeredField::interpolate(const ExtendedLattice& lat, const std::vector<d
     double wx[4], dwx[4], wy[4], dwy[4];
     catmull_rom(tx, wx, dwx);
     catmull_rom(ty, wy, dwy);
-    double v = 0.0, gx = 0.0, gy = 0.0;
-    for (int a = 0; a < 4; ++a)
+    // (value, d/dx) as the two lanes of one vector (each lane the same
+    // products and sums in the same order as separate scalars).
+    Eigen::Array2d v_gx = Eigen::Array2d::Zero();
+    double gy = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      const Eigen::Array2d w_a(wx[a], dwx[a]);
       for (int b = 0; b < 4; ++b) {
-        v += wx[a] * wy[b] * node[a][b];
-        gx += dwx[a] * wy[b] * node[a][b];
+        v_gx += w_a * wy[b] * node[a][b];
         gy += wx[a] * dwy[b] * node[a][b];
       }
+    }
+    const double v = v_gx[0], gx = v_gx[1];
     *value = v;
     if (gradient) *gradient = Eigen::Vector2d(gx / lat.hx, gy / lat.hy);
     return;

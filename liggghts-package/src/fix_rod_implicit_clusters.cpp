@@ -37,13 +37,24 @@ using namespace LAMMPS_NS;
 
 std::vector<std::vector<int>> FixRodImplicit::step_clusters(const RodGather &gather) const {
   std::vector<int> molecules;  // rods that move (held rods stay put, alone)
+  for (const auto &entry : gather.rods)
+    if (!held_rods_.count(entry.first)) molecules.push_back(entry.first);
+  // One moving rod is a cluster of its own: no pass over its spheres (a
+  // whole-array copy per step of a long rod otherwise).
+  if (molecules.size() <= 1) {
+    std::vector<std::vector<int>> clusters;
+    if (!molecules.empty()) clusters.push_back({molecules.front()});
+    for (int held : held_rods_)
+      if (gather.rods.count(held)) clusters.push_back({held});
+    return clusters;
+  }
   std::vector<std::vector<Eigen::Vector3d>> positions;
   double largest_radius = 0.0, fastest = 0.0;
-  for (const auto &entry : gather.rods) {
-    if (held_rods_.count(entry.first)) continue;
-    molecules.push_back(entry.first);
+  for (int molecule : molecules) {
+    const std::vector<GatheredSphere> &spheres = gather.rods.at(molecule);
     positions.emplace_back();
-    for (const GatheredSphere &s : entry.second) {
+    positions.back().reserve(spheres.size());
+    for (const GatheredSphere &s : spheres) {
       positions.back().push_back(s.position);
       largest_radius = std::max(largest_radius, s.radius);
       fastest = std::max(fastest, s.velocity.norm());

@@ -98,7 +98,8 @@ void FiniteRotationUpdate::apply(OverdampedRod& rod, const Eigen::VectorXd& dy) 
     correction_ = laplacian_.solve(incidence_rhs_);
   }
   // Zero mean per component: its centroid moves by the mean dx.
-  std::vector<Eigen::RowVector3d> mean(component_size_.size(), Eigen::RowVector3d::Zero());
+  std::vector<Eigen::RowVector3d>& mean = component_mean_;  // kept: no allocation per step
+  mean.assign(component_size_.size(), Eigen::RowVector3d::Zero());
   for (int i = 0; i < n; ++i) mean[component_[i]] += correction_.row(i) / component_size_[component_[i]];
   for (int i = 0; i < n; ++i)
     rod.positions[i] += dy.segment<3>(6 * i) + (correction_.row(i) - mean[component_[i]]).transpose();

@@ -64,6 +64,7 @@ class FiniteRotationUpdate {
   std::vector<int> component_size_;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> laplacian_;  // L + one pinned sphere per component
   Eigen::MatrixXd incidence_rhs_, correction_;  // n x 3 work arrays: B^T delta, then z [m]
+  std::vector<Eigen::RowVector3d> component_mean_;  // mean correction per component [m] (work array)
 };
 
 }  // namespace hsrod

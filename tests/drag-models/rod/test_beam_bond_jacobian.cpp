@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <random>
 
 using namespace hsrod;
@@ -87,4 +88,47 @@ TEST(BeamBondJacobian, SeriesAndClosedFormsOfTheSo3JacobiansJoin) {
   EXPECT_LT((so3_left_jacobian(0.0099999999 * w) - so3_left_jacobian(0.0100000001 * w)).norm(), 1e-9);
   EXPECT_LT((so3_left_jacobian_inverse(0.0099999999 * w) - so3_left_jacobian_inverse(0.0100000001 * w)).norm(),
             1e-9);
+}
+
+TEST(BeamBondJacobian, StiffnessAddedFromItsPiecesEqualsTheNegatedJacobianBitForBit) {
+  // The banded step adds K = -J to its 6x6 blocks straight from the 3x3
+  // pieces; it must give the same numbers, to the last bit, as adding the
+  // 12x12 Jacobian's negated blocks to blocks that already hold something.
+  std::mt19937 rng(20261202);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double d = 3e-6;
+  int differing = 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    const Eigen::Quaterniond qi0 = random_rotation(rng, 3.0), qj0 = random_rotation(rng, 3.0);
+    const Eigen::Vector3d xi0(u(rng) * d, u(rng) * d, u(rng) * d);
+    const Eigen::Vector3d xj0 = xi0 + d * Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized();
+    const BeamBondRest rest = BeamBondRest::from_current(xi0, qi0, xj0, qj0);
+    const BeamBondStiffness k = BeamBondStiffness::from_material({15e6, 0.3, d, 0.0}, d);
+    const Eigen::Vector3d xi = xi0 + 0.1 * d * Eigen::Vector3d(u(rng), u(rng), u(rng));
+    const Eigen::Vector3d xj = xj0 + 0.1 * d * Eigen::Vector3d(u(rng), u(rng), u(rng));
+    const Eigen::Quaterniond qi = (random_rotation(rng, 0.6) * qi0).normalized();
+    const Eigen::Quaterniond qj = (random_rotation(rng, 0.6) * qj0).normalized();
+    using Block = Eigen::Matrix<double, 6, 6>;
+    const double scale = k.axial;
+    Block start[4];
+    for (Block& b : start) b = scale * Block::Random();
+    if (trial % 2) start[1].setZero();  // the off-diagonal blocks start from zero in the step
+    BondLoads loads, loads_direct;
+    BondJacobian j;
+    beam_bond_loads_and_jacobian(xi, qi, xj, qj, rest, k, loads, j);
+    Block via_jacobian[4] = {start[0], start[1], start[2], start[3]};
+    via_jacobian[0] += -j.block<6, 6>(0, 0);
+    via_jacobian[1] += -j.block<6, 6>(0, 6);
+    via_jacobian[2] += -j.block<6, 6>(6, 0);
+    via_jacobian[3] += -j.block<6, 6>(6, 6);
+    Block direct[4] = {start[0], start[1], start[2], start[3]};
+    beam_bond_loads_and_add_stiffness(xi, qi, xj, qj, rest, k, loads_direct, direct[0], direct[1], direct[2],
+                                      direct[3]);
+    for (int b = 0; b < 4; ++b)
+      for (int e = 0; e < 36; ++e)
+        if (std::memcmp(&direct[b](e), &via_jacobian[b](e), sizeof(double)) != 0) ++differing;
+    for (int e = 0; e < 12; ++e)
+      if (std::memcmp(&loads(e), &loads_direct(e), sizeof(double)) != 0) ++differing;
+  }
+  EXPECT_EQ(differing, 0);
 }

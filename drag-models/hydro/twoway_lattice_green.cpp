@@ -1,21 +1,12 @@
 #include "hydro/twoway_lattice_green.h"
 
+#include "hydro/peskin_kernel.h"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 namespace hsrod {
-
-namespace {
-// Peskin's 4-point regularised delta function (Peskin, Acta Numerica 11,
-// 2002), r in kernel widths (as in twoway_window_model.cpp).
-double peskin_kernel(double r) {
-  r = std::abs(r);
-  if (r < 1.0) return (3.0 - 2.0 * r + std::sqrt(1.0 + 4.0 * r - 4.0 * r * r)) / 8.0;
-  if (r < 2.0) return (5.0 - 2.0 * r - std::sqrt(std::max(0.0, -7.0 + 12.0 * r - 4.0 * r * r))) / 8.0;
-  return 0.0;
-}
-}  // namespace
 
 Eigen::Vector2d lattice_node_position(const Eigen::Vector2i& doubled, const Eigen::Vector2d& anchor, double h) {
   return anchor + 0.5 * h * doubled.cast<double>();

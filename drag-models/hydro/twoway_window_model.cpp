@@ -1,6 +1,7 @@
 #include "hydro/twoway_window_model.h"
 #include "common/math_constants.h"
 #include "hydro/nonlocal_model.h"
+#include "hydro/peskin_kernel.h"
 
 #include <Eigen/Cholesky>
 
@@ -15,16 +16,6 @@
 namespace hsrod {
 
 namespace {
-
-// Peskin's 4-point regularised delta function (Peskin, Acta Numerica 11, 2002), r in
-// cells: sum_j phi(r - j) = 1, sum_j (r - j) phi(r - j) = 0 and
-// sum_j phi(r - j)^2 = 3/8 for every r.
-double peskin_kernel(double r) {
-  r = std::abs(r);
-  if (r < 1.0) return (3.0 - 2.0 * r + std::sqrt(1.0 + 4.0 * r - 4.0 * r * r)) / 8.0;
-  if (r < 2.0) return (5.0 - 2.0 * r - std::sqrt(std::max(0.0, -7.0 + 12.0 * r - 4.0 * r * r))) / 8.0;
-  return 0.0;
-}
 
 // Faces beyond `start` [m] along one direction (sign +-1), cells growing by
 // `ratio` from h, up to `distance` [m] (the last face exactly there; a last

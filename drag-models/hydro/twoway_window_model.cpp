@@ -247,9 +247,7 @@ WindowLattice TwoWayWindowModel::window_lattice(const Eigen::Vector2d& lo, const
   return lattice;
 }
 
-void TwoWayWindowModel::place_window(const RodGeometry& rod, const BackgroundFlow& flow, RodState& rod_state,
-                                     TwoWayWindowState& state) const {
-  const ChannelGeometry& geometry = flow.geometry();
+WindowLattice TwoWayWindowModel::lattice_for(const RodGeometry& rod, const BackgroundFlow& flow) const {
   Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
   for (const auto& x : rod.positions) {
     lo = lo.cwiseMin(x.head<2>());
@@ -262,7 +260,18 @@ void TwoWayWindowModel::place_window(const RodGeometry& rod, const BackgroundFlo
   Eigen::Vector2i travel = Eigen::Vector2i::Zero();
   for (int a = 0; a < 2; ++a)
     if (std::abs(stream[a]) > stream.norm() / 3.0) travel[a] = stream[a] > 0.0 ? 1 : -1;
-  const WindowLattice lattice = window_lattice(lo, hi, geometry, travel);
+  return window_lattice(lo, hi, flow.geometry(), travel);
+}
+
+long TwoWayWindowModel::window_cells_for(const RodGeometry& rod, const BackgroundFlow& flow) const {
+  const WindowLattice lattice = lattice_for(rod, flow);
+  return static_cast<long>(lattice.nx) * lattice.ny;
+}
+
+void TwoWayWindowModel::place_window(const RodGeometry& rod, const BackgroundFlow& flow, RodState& rod_state,
+                                     TwoWayWindowState& state) const {
+  const ChannelGeometry& geometry = flow.geometry();
+  const WindowLattice lattice = lattice_for(rod, flow);
   const long cells = static_cast<long>(lattice.nx) * lattice.ny;
   if (cells > options_.max_window_cells)
     throw std::invalid_argument("twoway: window of " + std::to_string(cells) + " cells exceeds the limit of " +

@@ -149,6 +149,11 @@ class TwoWayWindowModel : public LocalDragBase {
   // (NonlocalRodModel::interaction_reach: coupling below 1e-3 of a sphere's
   // own obstruction).
   double interaction_reach() const override;
+  // Cells of the window the model would place for `rod` in `flow` now, and
+  // the limit above which it refuses it (options.max_window_cells): for a
+  // check before the run (bounded work, issue 10).
+  long window_cells_for(const RodGeometry& rod, const BackgroundFlow& flow) const;
+  long max_window_cells() const { return options_.max_window_cells; }
 
   double film_friction() const { return film_friction_; }  // zeta_f [N s/m]
   double free_self_mobility() const { return free_self_mobility_; }  // m_free [m/(N s)]
@@ -216,6 +221,8 @@ class TwoWayWindowModel : public LocalDragBase {
 
   void evaluate_with(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, TwoWayWindowState& state) const;
   Footprint footprint(const BrinkmanWindow& window, const Eigen::Vector3d& centre) const;
+  // The window lattice for the rod as it is now (its span, the way the flow carries it).
+  WindowLattice lattice_for(const RodGeometry& rod, const BackgroundFlow& flow) const;
   void place_window(const RodGeometry& rod, const BackgroundFlow& flow, RodState& rod_state,
                     TwoWayWindowState& state) const;
   bool window_holds(const RodGeometry& rod, const ChannelGeometry& geometry, const BrinkmanWindow& window) const;

@@ -172,6 +172,7 @@ void FixHeleShawDrag::choose_model() {
     std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s", e.what());
     error->all(FLERR, msg);
   }
+  check_window_budget(d);
 }
 
 // The explicit drag limit 2 m / zeta_max over all rods (the facade's).

@@ -36,6 +36,11 @@ struct RodGeometry {
   std::vector<Eigen::Vector3d> section_tangents() const;
 };
 
+// Several rods as one set of spheres (rod after rod), for the models that
+// couple rods through one evaluation (evaluate_rods): the first rod's
+// diameter, `id` naming the set.
+RodGeometry joined_rods(const std::vector<RodGeometry>& rods, int id);
+
 // Hydrodynamic load of one rod, affine in the sphere velocities.
 struct RodDrag {
   std::vector<Eigen::Matrix3d> resistance;        // per-sphere blocks of R [N s/m] (local models)

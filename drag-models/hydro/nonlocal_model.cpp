@@ -109,11 +109,7 @@ void NonlocalRodModel::evaluate_rods(const std::vector<RodGeometry>& rods, const
     evaluate(rods.front(), flow, out, state);
     return;
   }
-  RodGeometry all;
-  all.sphere_diameter = rods.empty() ? 0.0 : rods.front().sphere_diameter;
-  all.id = rods.empty() ? 0 : rods.front().id;
-  for (const RodGeometry& rod : rods) all.positions.insert(all.positions.end(), rod.positions.begin(), rod.positions.end());
-  evaluate(all, flow, out, state);
+  evaluate(joined_rods(rods, rods.empty() ? 0 : rods.front().id), flow, out, state);
 }
 
 double depth_averaged_interaction_reach(double gap_height, double viscosity, double obstruction_friction,

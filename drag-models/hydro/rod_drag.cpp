@@ -82,4 +82,12 @@ void HydrodynamicModel::restore_state(ModelState&, const std::vector<double>& da
   if (!data.empty()) throw std::invalid_argument(name() + ": restart data for a model that keeps no state");
 }
 
+RodGeometry joined_rods(const std::vector<RodGeometry>& rods, int id) {
+  RodGeometry all;
+  all.sphere_diameter = rods.empty() ? 0.0 : rods.front().sphere_diameter;
+  all.id = id;
+  for (const RodGeometry& rod : rods) all.positions.insert(all.positions.end(), rod.positions.begin(), rod.positions.end());
+  return all;
+}
+
 }  // namespace hsrod

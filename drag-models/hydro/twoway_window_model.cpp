@@ -568,14 +568,9 @@ void TwoWayWindowModel::evaluate_rods(const std::vector<RodGeometry>& rods, cons
     evaluate(rods.front(), flow, out, state);
     return;
   }
-  RodGeometry all;
-  all.sphere_diameter = rods.empty() ? 0.0 : rods.front().sphere_diameter;
-  all.id = joint_key(rods);
+  const RodGeometry all = joined_rods(rods, joint_key(rods));
   std::vector<int> members;
-  for (const RodGeometry& rod : rods) {
-    all.positions.insert(all.positions.end(), rod.positions.begin(), rod.positions.end());
-    members.push_back(rod.id);
-  }
+  for (const RodGeometry& rod : rods) members.push_back(rod.id);
   if (auto* own = dynamic_cast<TwoWayWindowState*>(state)) {
     // A window kept under this key for another set of rods is dropped (a
     // restored one, members unknown, is kept: it was saved for these rods).

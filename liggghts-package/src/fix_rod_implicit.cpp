@@ -274,13 +274,13 @@ void FixRodImplicit::initial_integrate(int) {
     }
     stepped_rods_.push_back(entry.first);  // its bond state (strain, energy) on demand
     // A step that would carry a sphere centre out of the box (the outlet,
-    // or any non-periodic face) is not taken: the rod is held where it is,
-    // whole, instead of LIGGGHTS dropping its spheres one by one.
+    // or any non-periodic face) is taken only up to the face: the rod is
+    // held there, whole, instead of LIGGGHTS dropping its spheres one by one.
     const int face = leaving_face(rod.positions, domain->boxlo, domain->boxhi, domain->periodicity);
     if (face >= 0) {
       held_rods_.insert(entry.first);
       report_held_at_face("rod " + std::to_string(entry.first), face);
-      hold_rod(spheres);
+      hold_rod_at_face(spheres, before, rod.positions);
       continue;
     }
     largest = std::max(largest, result.largest_displacement / geometry.sphere_diameter);

@@ -141,6 +141,8 @@ class FixRodImplicit : public Fix {
   std::set<int> held_rods_;      // rods held at the box boundary (their next step would leave the box)
   void check_whole_rods(const RodGather &gather);
   void hold_rod(const std::vector<GatheredSphere> &spheres);
+  void hold_rod_at_face(const std::vector<GatheredSphere> &spheres, const std::vector<Eigen::Vector3d> &before,
+                        const std::vector<Eigen::Vector3d> &after);
   // The step's new state back to the local atoms (positions by the step's
   // displacement from `before`, velocities, spins, orientations) and the
   // hydrodynamic loads at the new velocities to the drag fix.

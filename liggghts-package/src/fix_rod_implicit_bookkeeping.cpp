@@ -9,12 +9,14 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_hele_shaw_drag.h"
 #include "fix_rod_bonds.h"
 #include "force.h"
 #include "lmptype.h"
 #include "modify.h"
+#include "rod_accounting.h"
 #include "rod_gather.h"
 #include "update.h"
 
@@ -105,6 +107,22 @@ void FixRodImplicit::refresh_bond_state() {
   bond_strain_ = strain;
   bond_energy_ = energy;
   bond_state_fresh_ = true;
+}
+
+// A rod whose step (before -> after, sphere by sphere as `spheres`) would
+// carry a centre out of the box takes the part of it that brings the
+// leading centre to the face, and is held there: its exit does not depend
+// on the step size (a step of 5 d used to hold it up to 5 d short).
+void FixRodImplicit::hold_rod_at_face(const std::vector<GatheredSphere> &spheres,
+                                      const std::vector<Eigen::Vector3d> &before,
+                                      const std::vector<Eigen::Vector3d> &after) {
+  const double part = fraction_inside_box(before, after, domain->boxlo, domain->boxhi, domain->periodicity);
+  for (std::size_t k = 0; k < spheres.size() && k < before.size() && k < after.size(); k++) {
+    const int i = atom->map(spheres[k].tag);
+    if (i < 0 || i >= atom->nlocal) continue;
+    for (int a = 0; a < 3; a++) atom->x[i][a] = before[k][a] + part * (after[k][a] - before[k][a]);
+  }
+  hold_rod(spheres);
 }
 
 // A held rod stays where it is, at rest.

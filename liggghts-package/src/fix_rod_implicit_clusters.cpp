@@ -153,14 +153,14 @@ void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
   joint_strain_ = std::max(joint_strain_, strain_energy.first);
   joint_energy_ += strain_energy.second;
   // A step that would carry a sphere centre out of the box (the outlet,
-  // or any non-periodic face) is not taken: the rod (with the rods stepped
-  // with it) is held where it is, whole, instead of LIGGGHTS dropping its
-  // spheres one by one.
+  // or any non-periodic face) is taken only up to the face: the rod (with
+  // the rods stepped with it) is held there, whole, instead of LIGGGHTS
+  // dropping its spheres one by one.
   const int face = leaving_face(rod.positions, domain->boxlo, domain->boxhi, domain->periodicity);
   if (face >= 0) {
     held_rods_.insert(molecules.begin(), molecules.end());
     report_held_at_face(name, face);
-    hold_rod(spheres);
+    hold_rod_at_face(spheres, before, rod.positions);
     return;
   }
   totals.largest = std::max(totals.largest, result.largest_displacement / geometries.front().sphere_diameter);
@@ -236,8 +236,8 @@ void FixRodImplicit::report_held_at_face(const std::string &who, int face) {
   char msg[480];
   std::snprintf(msg, sizeof(msg),
                 "fix rod/implicit: %s reached the box's %s face at step " BIGINT_FORMAT
-                " (t = %g s): its next step would carry a sphere out of the box; the rod is held there, "
-                "whole, from then on (measures stay at its exit)\n", who.c_str(), face_name(face),
+                " (t = %g s): its step would carry a sphere out of the box; it is taken up to the face and the "
+                "rod held there, whole, from then on (measures stay at its exit)\n", who.c_str(), face_name(face),
                 update->ntimestep, update->get_cur_time());
   if (screen) fputs(msg, screen);
   if (logfile) fputs(msg, logfile);

@@ -37,6 +37,24 @@ int leaving_face(const std::vector<Eigen::Vector3d> &positions, const double *bo
   return -1;
 }
 
+double fraction_inside_box(const std::vector<Eigen::Vector3d> &before, const std::vector<Eigen::Vector3d> &after,
+                           const double *boxlo, const double *boxhi, const int *periodic) {
+  double fraction = 1.0;
+  for (std::size_t k = 0; k < before.size() && k < after.size(); k++)
+    for (int a = 0; a < 3; a++) {
+      if (periodic[a]) continue;
+      // A centre exactly on a face belongs to no sub-domain (LIGGGHTS
+      // drops it as lost): stop a hair inside, 1e-9 of the box extent.
+      const double margin = 1e-9 * (boxhi[a] - boxlo[a]);
+      const double from = before[k][a], to = after[k][a];
+      if (to > boxhi[a] - margin && to > from)
+        fraction = std::min(fraction, (boxhi[a] - margin - from) / (to - from));
+      if (to < boxlo[a] + margin && to < from)
+        fraction = std::min(fraction, (from - boxlo[a] - margin) / (from - to));
+    }
+  return std::max(0.0, fraction);
+}
+
 const char *face_name(int face) {
   static const char *names[6] = {"-x", "+x", "-y", "+y", "-z", "+z"};
   return face >= 0 && face < 6 ? names[face] : "none";

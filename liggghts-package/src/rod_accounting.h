@@ -7,7 +7,9 @@
    - leaving_face: the box face a rod's step would carry a sphere centre
      through (non-periodic directions), so that the integrator can hold the
      rod at the boundary instead of letting LIGGGHTS lose its spheres one by
-     one as it leaves.
+     one as it leaves; fraction_inside_box: how much of such a step keeps
+     every centre inside, so the rod is held where its leading sphere
+     reaches the face (the exit, independent of the step size).
    - first_rod_overlap: two rods whose spheres overlap, for the refusal of
      rod-rod contact when no pair style handles it.
    No LIGGGHTS state: plain data in, plain data out.
@@ -42,6 +44,13 @@ class RodCensus {
 int leaving_face(const std::vector<Eigen::Vector3d> &positions, const double *boxlo, const double *boxhi,
                  const int *periodic);
 const char *face_name(int face);  // "-x", "+x", ...
+
+// The largest s in [0, 1] for which every centre before[k] + s (after[k] -
+// before[k]) lies inside the box, at least 1e-9 of its extent from a face,
+// in the non-periodic directions (1 if the whole step stays inside;
+// `before` must be inside) [-].
+double fraction_inside_box(const std::vector<Eigen::Vector3d> &before, const std::vector<Eigen::Vector3d> &after,
+                           const double *boxlo, const double *boxhi, const int *periodic);
 
 // The first pair of different rods with overlapping spheres: rod IDs and
 // the smallest centre distance over the sum of radii; rods = {-1, -1} if none.

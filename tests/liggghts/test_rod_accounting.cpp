@@ -46,6 +46,22 @@ TEST(RodAccounting, LeavingFaceIsTheNonPeriodicFaceACentreCrossed) {
   EXPECT_EQ(LAMMPS_NS::leaving_face(out_z, lo, hi, walls), 4);  // -z
 }
 
+TEST(RodAccounting, FractionInsideBoxBringsTheLeadingCentreOntoTheFace) {
+  const double lo[3] = {0, 0, 0}, hi[3] = {600e-6, 200e-6, 20e-6};
+  const int walls[3] = {0, 0, 0}, periodic_x[3] = {1, 0, 0};
+  // Two centres step +6 um in x; the front one starts 2 um before the
+  // outlet, so a third of the step reaches it; the other one would not.
+  const std::vector<Eigen::Vector3d> before{{595e-6, 100e-6, 10e-6}, {598e-6, 100e-6, 10e-6}},
+      after{{601e-6, 100e-6, 10e-6}, {604e-6, 100e-6, 10e-6}};
+  EXPECT_NEAR(LAMMPS_NS::fraction_inside_box(before, after, lo, hi, walls), 1.0 / 3.0, 1e-6);  // 2 um less 6e-13 m of 6 um
+  EXPECT_LT(LAMMPS_NS::fraction_inside_box(before, after, lo, hi, walls), 1.0 / 3.0);
+  EXPECT_EQ(LAMMPS_NS::fraction_inside_box(before, after, lo, hi, periodic_x), 1.0);
+  EXPECT_EQ(LAMMPS_NS::fraction_inside_box(before, before, lo, hi, walls), 1.0);
+  // Through the -y face: 1 um of a 4 um step.
+  const std::vector<Eigen::Vector3d> low{{300e-6, 1e-6, 10e-6}}, below{{300e-6, -3e-6, 10e-6}};
+  EXPECT_NEAR(LAMMPS_NS::fraction_inside_box(low, below, lo, hi, walls), 0.25, 1e-6);
+}
+
 TEST(RodAccounting, OverlapOfTwoRodsNamesThemAndTheClosestDistance) {
   std::map<int, std::vector<GatheredSphere>> rods{{1, rod(1, 5, {0, 0, 0}, {3e-6, 0, 0})},
                                                   {2, rod(2, 5, {0, 9e-6, 0}, {3e-6, 0, 0})}};

@@ -102,6 +102,13 @@ class BrinkmanWindow {
   // nodes()), spread uniformly over the node's control area (the cell
   // spacings around it) and the gap height.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& node_forces) const;
+  // The same for forces given by their non-zeros (column c: (node, force
+  // [N]) pairs, nodes distinct), returning the velocities [m/s] only at
+  // `at_nodes` (rows as at_nodes, one column per force column): bit for bit
+  // the rows of solve(), without its dense window-sized matrices (a level-4
+  // update needs the response at the spheres' footprints only).
+  using NodeForces = std::vector<std::pair<int, double>>;
+  Eigen::MatrixXd solve_at(const std::vector<NodeForces>& node_forces, const std::vector<int>& at_nodes) const;
 
   // Read access for field output (flow/window_flow_field.h).
   // Unknown of the u node (i, j), 0 <= i <= nx, 0 <= j < ny, and of the v

@@ -20,9 +20,6 @@ struct UmfpackObjects {
   }
 };
 
-// Columns solved together (the 2n columns of a level-4 update in one pass
-// for rods of up to 16 spheres).
-constexpr int kBlock = 32;
 }  // namespace
 
 SparseLuFactors::SparseLuFactors(const Eigen::SparseMatrix<double>& matrix) : n_(static_cast<int>(matrix.rows())) {
@@ -58,6 +55,12 @@ SparseLuFactors::SparseLuFactors(const Eigen::SparseMatrix<double>& matrix) : n_
     throw std::runtime_error("SparseLuFactors: UMFPACK could not return the factors (status " + std::to_string(status) + ")");
   if (!do_recip)
     for (double& r : row_scale_) r = 1.0 / r;
+  pivot_of_row_.resize(n_);
+  pivot_of_column_.resize(n_);
+  for (int k = 0; k < n_; ++k) {
+    pivot_of_row_[row_order_[k]] = k;
+    pivot_of_column_[column_order_[k]] = k;
+  }
   for (int j = 0; j < n_; ++j)  // the solve divides by U's diagonal, the last entry of each column
     if (u_start_[j + 1] == u_start_[j] || u_row_[u_start_[j + 1] - 1] != j || u_values_[u_start_[j + 1] - 1] == 0.0)
       throw std::runtime_error("SparseLuFactors: singular matrix");
@@ -101,6 +104,57 @@ Eigen::MatrixXd SparseLuFactors::solve(const Eigen::MatrixXd& rhs) const {
     for (int k = 0; k < n_; ++k) {
       const double* yk = &y[static_cast<std::size_t>(k) * kBlock];
       for (int c = 0; c < m; ++c) x(column_order_[k], first + c) = yk[c];
+    }
+  }
+  return x;
+}
+
+Eigen::MatrixXd SparseLuFactors::solve_selected(const std::vector<SparseColumn>& columns,
+                                                const std::vector<int>& rows) const {
+  for (int r : rows)
+    if (r < 0 || r >= n_) throw std::invalid_argument("SparseLuFactors::solve_selected: row out of range");
+  for (const SparseColumn& column : columns)
+    for (const auto& entry : column)
+      if (entry.first < 0 || entry.first >= n_)
+        throw std::invalid_argument("SparseLuFactors::solve_selected: entry row out of range");
+  const int total = static_cast<int>(columns.size());
+  Eigen::MatrixXd x(rows.size(), total);
+  // The substitutions are solve()'s, written out again rather than shared:
+  // as a separate function the compiler vectorised the column loops worse
+  // (measured ~35 % slower on a 8 100-unknown system).
+  std::vector<double> y(static_cast<std::size_t>(n_) * kBlock);
+  for (int first = 0; first < total; first += kBlock) {
+    const int m = std::min(kBlock, total - first);
+    // y = P R b: zero but at the non-zeros of b
+    std::fill(y.begin(), y.end(), 0.0);
+    for (int c = 0; c < m; ++c)
+      for (const auto& entry : columns[first + c])
+        y[static_cast<std::size_t>(pivot_of_row_[entry.first]) * kBlock + c] = row_scale_[entry.first] * entry.second;
+    // L y' = y (rows of L: gather from earlier unknowns; unit diagonal last)
+    for (int k = 0; k < n_; ++k) {
+      double* yk = &y[static_cast<std::size_t>(k) * kBlock];
+      for (int p = l_start_[k]; p < l_start_[k + 1] - 1; ++p) {
+        const double l = l_values_[p];
+        const double* yj = &y[static_cast<std::size_t>(l_column_[p]) * kBlock];
+        for (int c = 0; c < m; ++c) yk[c] -= l * yj[c];
+      }
+    }
+    // U z = y' (columns of U: scatter into earlier unknowns; diagonal last)
+    for (int j = n_ - 1; j >= 0; --j) {
+      double* yj = &y[static_cast<std::size_t>(j) * kBlock];
+      const int last = u_start_[j + 1] - 1;
+      const double inverse = 1.0 / u_values_[last];
+      for (int c = 0; c < m; ++c) yj[c] *= inverse;
+      for (int p = u_start_[j]; p < last; ++p) {
+        const double u = u_values_[p];
+        double* yi = &y[static_cast<std::size_t>(u_row_[p]) * kBlock];
+        for (int c = 0; c < m; ++c) yi[c] -= u * yj[c];
+      }
+    }
+    // x = Q z at the rows asked for
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      const double* z = &y[static_cast<std::size_t>(pivot_of_column_[rows[r]]) * kBlock];
+      for (int c = 0; c < m; ++c) x(static_cast<Eigen::Index>(r), first + c) = z[c];
     }
   }
   return x;

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <utility>
 #include <vector>
 
 namespace hsrod {
@@ -28,6 +29,12 @@ class SparseLuFactors {
   long factor_entries() const { return static_cast<long>(l_values_.size() + u_values_.size()); }
   // Solves A X = B for all columns of B.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
+  // The same for a B given by its non-zeros (column c: (row, value) pairs,
+  // rows distinct), returning X only at `rows` (rows.size() x columns): the
+  // same arithmetic as solve() (bit for bit), without the dense B and X
+  // (a level-4 update needs the response at its footprints only).
+  using SparseColumn = std::vector<std::pair<int, double>>;
+  Eigen::MatrixXd solve_selected(const std::vector<SparseColumn>& columns, const std::vector<int>& rows) const;
 
  private:
   int n_ = 0;
@@ -38,6 +45,10 @@ class SparseLuFactors {
   std::vector<int> row_order_;           // P[k]: the original row of pivot row k
   std::vector<int> column_order_;        // Q[k]: the original column of pivot column k
   std::vector<double> row_scale_;        // R as multipliers
+  std::vector<int> pivot_of_row_;        // inverse of row_order_: pivot row k of original row i
+  std::vector<int> pivot_of_column_;     // inverse of column_order_
+  // Columns solved together: the 2n columns of a level-4 update in one pass for rods of up to 16 spheres.
+  static constexpr int kBlock = 32;
 };
 
 }  // namespace hsrod

@@ -3,6 +3,7 @@
 #include "hydro/peskin_kernel.h"
 
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <stdexcept>
 
@@ -91,13 +92,40 @@ double LatticeGreenTable::g(int source, int target, const Eigen::Vector2i& offse
 }
 
 Eigen::Matrix2d LatticeGreenTable::pair(const LatticeFootprint& fi, const LatticeFootprint& fj) const {
+  // As g() per node pair, with the range check once per footprint pair (the
+  // largest offset is that of the footprints' bounding boxes) and the check
+  // for untabulated offsets on the sum (a NaN entry makes it NaN): the same
+  // products summed in the same order as one g() per term.
+  const int side = 2 * half_ + 1;
   Eigen::Matrix2d m;
   for (int a = 0; a < 2; ++a)
     for (int b = 0; b < 2; ++b) {
+      const auto& ni = fi.nodes[a];
+      const auto& nj = fj.nodes[b];
+      if (!ni.empty() && !nj.empty()) {
+        Eigen::Vector2i lo_i = ni.front(), hi_i = ni.front(), lo_j = nj.front(), hi_j = nj.front();
+        for (const auto& p : ni) {
+          lo_i = lo_i.cwiseMin(p);
+          hi_i = hi_i.cwiseMax(p);
+        }
+        for (const auto& p : nj) {
+          lo_j = lo_j.cwiseMin(p);
+          hi_j = hi_j.cwiseMax(p);
+        }
+        if ((hi_i - lo_j).cwiseAbs().maxCoeff() > half_ || (lo_i - hi_j).cwiseAbs().maxCoeff() > half_)
+          throw std::out_of_range("LatticeGreenTable: offset beyond the table");
+      }
+      // Entry of offset (dx, dy): centre + dx * side + dy.
+      const double* centre = table_[b][a].data() + static_cast<std::size_t>(half_) * side + half_;
+      const double* wi = fi.weights[a].data();
+      const double* wj = fj.weights[b].data();
       double sum = 0.0;
-      for (std::size_t k = 0; k < fi.nodes[a].size(); ++k)
-        for (std::size_t l = 0; l < fj.nodes[b].size(); ++l)
-          sum += fi.weights[a][k] * fj.weights[b][l] * g(b, a, fi.nodes[a][k] - fj.nodes[b][l]);
+      for (std::size_t k = 0; k < ni.size(); ++k) {
+        const std::ptrdiff_t at = static_cast<std::ptrdiff_t>(ni[k].x()) * side + ni[k].y();
+        for (std::size_t l = 0; l < nj.size(); ++l)
+          sum += wi[k] * wj[l] * centre[at - (static_cast<std::ptrdiff_t>(nj[l].x()) * side + nj[l].y())];
+      }
+      if (std::isnan(sum)) throw std::out_of_range("LatticeGreenTable: offset not tabulated");
       m(a, b) = sum;
     }
   return m;

@@ -247,6 +247,11 @@ struct OverdampedRodSolver::Workspace {
   // Block-tridiagonal storage: diagonal[k] = A(k, k), upper[k] = A(k, k+1),
   // lower[k] = A(k, k-1) (6x6 blocks).
   std::vector<Matrix6d> diagonal, upper, lower;
+  // Eliminating in the assembly pass (step()), a diagonal block is dead once
+  // its row is eliminated (block_lus keeps its LU): spheres k and k+1 only
+  // are live, kept here by parity (at 10 000 spheres the 288 bytes per
+  // sphere of `diagonal` no longer stream through the caches every step).
+  Matrix6d rolling_diagonal[2];
   std::vector<SmallBlockLu<6>> block_lus;  // LU of each eliminated diagonal block (kept for re-solves)
   // The same over groups of `group_spheres` spheres (6g x 6g blocks), sized
   // at analysis. The last group is padded to g spheres by unit rows that
@@ -311,7 +316,7 @@ struct OverdampedRodSolver::Workspace {
   template <typename Add>
   void add_couplings(const OverdampedRod& rod, const RodDrag& drag, double dt, Add add) const;
   void solve_banded(int n);
-  void eliminate_banded(int k, int n);
+  void eliminate_banded(int k, int n, Matrix6d& diagonal_k);
   void back_substitute_banded(int n);
   void resolve_banded(Eigen::VectorXd& b) const;
   bool fits_groups() const;
@@ -472,19 +477,20 @@ void OverdampedRodSolver::Workspace::add_couplings(const OverdampedRod& rod, con
 // Block elimination of the block-tridiagonal system in place: rhs becomes
 // the solution, upper[k] becomes A'(k,k)^-1 A(k,k+1).
 void OverdampedRodSolver::Workspace::solve_banded(int n) {
-  for (int k = 0; k < n; ++k) eliminate_banded(k, n);
+  for (int k = 0; k < n; ++k) eliminate_banded(k, n, diagonal[k]);
   back_substitute_banded(n);
 }
 
 // Forward elimination of block row k (rows 0..k-1 eliminated before).
-void OverdampedRodSolver::Workspace::eliminate_banded(int k, int n) {
+// `diagonal_k`: A(k, k), diagonal[k] or a rolling copy (step()).
+void OverdampedRodSolver::Workspace::eliminate_banded(int k, int n, Matrix6d& diagonal_k) {
   auto y = rhs.segment<6>(6 * k);
   if (k > 0) {
-    diagonal[k].noalias() -= lower[k] * upper[k - 1];
+    diagonal_k.noalias() -= lower[k] * upper[k - 1];
     y.noalias() -= lower[k] * rhs.segment<6>(6 * (k - 1));
   }
   SmallBlockLu<6>& block_lu = block_lus[k];
-  block_lu.compute(diagonal[k]);
+  block_lu.compute(diagonal_k);
   block_lu.solve_in_place(y);
   if (k + 1 < n) block_lu.solve_block_in_place(upper[k]);
 }
@@ -654,14 +660,19 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   const bool eliminate_in_pass = fused && !drag.coupled() && w.ordered_chain;
   Eigen::VectorXd& rhs = w.rhs;
   rhs.resize(ndof);
+  // A(i, i): rolling storage when each row is eliminated in the pass.
+  const auto diagonal = [&](int i) -> Matrix6d& {
+    return eliminate_in_pass ? w.rolling_diagonal[i & 1] : w.diagonal[i];
+  };
   // Sphere i's blocks (drag) and right-hand side (driving and external loads).
   const auto start_sphere = [&](int i) {
     if (fused) {
-      w.diagonal[i].setZero();
+      Matrix6d& d = diagonal(i);
+      d.setZero();
       w.upper[i].setZero();
       w.lower[i].setZero();
-      w.diagonal[i].block<3, 3>(3, 3) += drag.rotational_resistance[i] / dt * Eigen::Matrix3d::Identity();
-      if (!drag.coupled()) w.diagonal[i].block<3, 3>(0, 0) += drag.resistance[i] / dt;
+      d.block<3, 3>(3, 3) += drag.rotational_resistance[i] / dt * Eigen::Matrix3d::Identity();
+      if (!drag.coupled()) d.block<3, 3>(0, 0) += drag.resistance[i] / dt;
     }
     rhs.segment<3>(6 * i) = drag.driving_force[i] + rod.external_forces[i];
     rhs.segment<3>(6 * i + 3) = drag.driving_torque[i] + rod.external_torques[i];
@@ -673,8 +684,8 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
     Matrix6d& ij = b.j == b.i + 1 ? w.upper[b.i] : w.lower[b.i];
     Matrix6d& ji = b.j == b.i + 1 ? w.lower[b.j] : w.upper[b.j];
     beam_bond_loads_and_add_stiffness(rod.positions[b.i], rod.orientations[b.i], rod.positions[b.j],
-                                      rod.orientations[b.j], b.rest, b.stiffness, loads, w.diagonal[b.i], ij, ji,
-                                      w.diagonal[b.j]);
+                                      rod.orientations[b.j], b.rest, b.stiffness, loads, diagonal(b.i), ij, ji,
+                                      diagonal(b.j));
     rhs.segment<6>(6 * b.i) += loads.head<6>();
     rhs.segment<6>(6 * b.j) += loads.tail<6>();
   };
@@ -689,10 +700,10 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
       for (; next_wall < w.wall_contacts.size() && w.wall_contacts[next_wall].sphere == k; ++next_wall) {
         const SphereWallContact& c = w.wall_contacts[next_wall];
         rhs.segment<3>(6 * k) += c.force;
-        w.diagonal[k].block<3, 3>(0, 0) += c.stiffness;
-        if (c.rubbing) w.diagonal[k] += c.friction / dt;
+        diagonal(k).block<3, 3>(0, 0) += c.stiffness;
+        if (c.rubbing) diagonal(k) += c.friction / dt;
       }
-      w.eliminate_banded(k, n);
+      w.eliminate_banded(k, n, diagonal(k));
     }
     w.back_substitute_banded(n);
   } else {

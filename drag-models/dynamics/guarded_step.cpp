@@ -269,7 +269,7 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
   if (limits.max_substeps < 1) throw std::invalid_argument("StepGuardLimits: max_substeps must be >= 1");
   const int n = rod.size();
   // A fresh report in the caller's memory.
-  report.substeps = report.unresolved_substeps = report.rejected_trials = 0;
+  report.substeps = report.unresolved_substeps = report.rejected_trials = report.contact_iterations = 0;
   report.unresolved_error = report.largest_bond_strain = report.bond_energy = 0.0;
   report.worst = StepAssessment();
   OverdampedStepResult& total = report.result;
@@ -307,13 +307,80 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
       ws.substep_positions = rod.positions;
       ws.substep_orientations = rod.orientations;
       solver.step(rod, *current_drag, h, geometry, walls, ws.trial);
+      // Newton iterations where the wall-contact set changed in the step
+      // (StepGuardLimits::contact_iterations): the converged state is kept.
+      bool contact_iterated = false, contact_converged = false;
+      double contact_update = 0.0, contact_moved = 0.0;
+      if (limits.contact_iterations > 0 && geometry && walls) {
+        // Which spheres touch a wall, and their Hertz normal force [N].
+        const auto touching_set = [&](std::vector<char>& set, std::vector<double>* force = nullptr) {
+          set.resize(n);
+          if (force) force->assign(n, 0.0);
+          for (int i = 0; i < n; ++i) {
+            const WallContact c = wall_contact(*geometry, *walls, rod.positions[i], rod.radii[i]);
+            set[i] = c.touching;
+            if (force)
+              for (int k = 0; k < c.points; ++k) (*force)[i] += c.point[k].normal_force;
+          }
+        };
+        touching_set(ws.touching_end);
+        ws.iterate_positions = rod.positions;
+        rod.positions = ws.substep_positions;
+        touching_set(ws.touching_start);
+        rod.positions = ws.iterate_positions;
+        contact_iterated = ws.touching_start != ws.touching_end;
+        // Converged: the update is below max_step_error of the step's
+        // displacement (or 1e-6 d), the contact set no longer changes and
+        // every Hertz force changed by less than 1.5 max_step_error of itself
+        // (an overlap by max_step_error: a displacement test alone would stop
+        // a stiff contact at an overlap whose force is many times the loads),
+        // or by less than the force of an overlap of 1e-8 d.
+        const double d = 2.0 * rod.radii[0];
+        const double tolerance_floor = 1e-6 * d;
+        const double force_floor = 4.0 / 3.0 * walls->effective_modulus() * std::sqrt(0.5 * d) * std::pow(1e-8 * d, 1.5);
+        if (contact_iterated) touching_set(ws.touching_end, &ws.contact_force_end);
+        for (int k = 0; contact_iterated && k < limits.contact_iterations; ++k) {
+          ws.iterate_positions = rod.positions;
+          ws.touching_start.swap(ws.touching_end);  // the previous iterate's set and forces
+          ws.contact_force_start.swap(ws.contact_force_end);
+          solver.iterate(rod, ws.substep_positions, ws.substep_orientations, *current_drag, h, geometry, walls,
+                         ws.trial);
+          ++report.contact_iterations;
+          contact_update = contact_moved = 0.0;
+          for (int i = 0; i < n; ++i) {
+            contact_update = std::max(contact_update, (rod.positions[i] - ws.iterate_positions[i]).norm());
+            contact_moved = std::max(contact_moved, (rod.positions[i] - ws.substep_positions[i]).norm());
+          }
+          if (!std::isfinite(contact_update)) break;
+          touching_set(ws.touching_end, &ws.contact_force_end);
+          bool forces_settled = ws.touching_start == ws.touching_end;
+          for (int i = 0; i < n && forces_settled; ++i)
+            forces_settled = std::abs(ws.contact_force_end[i] - ws.contact_force_start[i]) <=
+                             1.5 * limits.max_step_error * std::max(ws.contact_force_end[i], force_floor);
+          if (forces_settled && contact_update <= limits.max_step_error * std::max(contact_moved, tolerance_floor)) {
+            contact_converged = true;
+            break;
+          }
+        }
+      }
       const OverdampedStepResult& r = ws.trial;
       StepAssessment a = assess_step(ws.substep_positions, rod, *current_drag, h, geometry, walls, limits);
+      if (contact_iterated) {
+        a.step_error = contact_update / std::max(contact_moved, 1e-300);
+        if (!std::isfinite(a.step_error)) a.step_error = HUGE_VAL;
+        if (!contact_converged && a.problem.empty()) {
+          std::ostringstream m;
+          m.precision(3);
+          m << "the Newton iterations on the wall contacts did not converge in " << limits.contact_iterations
+            << " (last update " << contact_update / (2.0 * rod.radii[0]) << " d)";
+          a.problem = m.str();
+        }
+      }
       using NewtonCheck = StepGuardLimits::NewtonCheck;
       const bool suspect = limits.newton_check == NewtonCheck::kAlways ||
                            (limits.newton_check == NewtonCheck::kWhenSuspect &&
                             (a.bond_load_ratio > limits.suspect_bond_load || r.wall_contact || r.self_contact));
-      if (a.problem.empty() && suspect) {
+      if (a.problem.empty() && suspect && !contact_iterated) {
         // Newton error: one more (simplified) Newton iteration with the
         // step's factors. Not across a contact: a sphere touching a wall (or
         // another sphere) at the start or the end of the step makes the

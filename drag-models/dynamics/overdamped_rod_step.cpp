@@ -289,6 +289,11 @@ struct OverdampedRodSolver::Workspace {
   std::vector<Eigen::Vector3d> step_start;    // positions before the step [m]
   std::vector<Eigen::Vector3d> correction_forces;
   OverdampedStepResult contact_scratch;
+  // iterate(): the step's start y0 (null in a plain step) and the loads
+  // (R + C) (y* - y0) / dt of the iterate's offset from it [N, N m].
+  const std::vector<Eigen::Vector3d>* origin_positions = nullptr;
+  const std::vector<Eigen::Quaterniond>* origin_orientations = nullptr;
+  Eigen::VectorXd origin_offset, origin_load;  // 6n: (dx [m], dphi [rad]); loads
 
   int analyses = 0;
   OverdampedSolverStatistics statistics;
@@ -606,6 +611,24 @@ void OverdampedRodSolver::displace(OverdampedRod& rod, const Eigen::VectorXd& dy
         (quaternion_from_rotation_vector(dy.segment<3>(6 * i + 3)) * rod.orientations[i]).normalized();
 }
 
+void OverdampedRodSolver::iterate(OverdampedRod& rod, const std::vector<Eigen::Vector3d>& start_positions,
+                                  const std::vector<Eigen::Quaterniond>& start_orientations, const RodDrag& drag,
+                                  double dt, const ChannelGeometry* geometry, const WallContactParameters* walls,
+                                  OverdampedStepResult& result) {
+  Workspace& w = *workspace_;
+  w.origin_positions = &start_positions;
+  w.origin_orientations = &start_orientations;
+  try {
+    step(rod, drag, dt, geometry, walls, result);
+  } catch (...) {
+    w.origin_positions = nullptr;
+    w.origin_orientations = nullptr;
+    throw;
+  }
+  w.origin_positions = nullptr;
+  w.origin_orientations = nullptr;
+}
+
 int OverdampedRodSolver::pattern_analyses() const { return workspace_->analyses; }
 const OverdampedSolverStatistics& OverdampedRodSolver::statistics() const { return workspace_->statistics; }
 void OverdampedRodSolver::set_linear_solver(LinearSolver method) { workspace_->method = method; }
@@ -643,6 +666,41 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   w.find_contacts(rod, geometry, walls, result);
   const Clock::time_point t_contacts = Clock::now();
 
+  // A Newton iteration (iterate()): the drag and friction of the offset
+  // y* - y0 the iterate has already moved from the step's start, taken off
+  // the right-hand side (the residual of backward Euler at y*).
+  const bool from_origin = w.origin_positions != nullptr;
+  if (from_origin) {
+    w.origin_offset.resize(ndof);
+    for (int i = 0; i < n; ++i) {
+      w.origin_offset.segment<3>(6 * i) = rod.positions[i] - (*w.origin_positions)[i];
+      w.origin_offset.segment<3>(6 * i + 3) =
+          rotation_vector((rod.orientations[i] * (*w.origin_orientations)[i].inverse()).normalized());
+    }
+    w.origin_load.setZero(ndof);
+    if (drag.coupled()) {
+      w.velocities.resize(3 * n);
+      for (int i = 0; i < n; ++i) w.velocities.segment<3>(3 * i) = w.origin_offset.segment<3>(6 * i) / dt;
+      w.hydrodynamic.noalias() = drag.coupled_resistance * w.velocities;
+    }
+    for (int i = 0; i < n; ++i) {
+      w.origin_load.segment<3>(6 * i) = drag.coupled()
+                                            ? Eigen::Vector3d(w.hydrodynamic.segment<3>(3 * i))
+                                            : Eigen::Vector3d(drag.resistance[i] * w.origin_offset.segment<3>(6 * i) / dt);
+      w.origin_load.segment<3>(6 * i + 3) = drag.rotational_resistance[i] * w.origin_offset.segment<3>(6 * i + 3) / dt;
+    }
+    for (const SphereWallContact& c : w.wall_contacts)
+      if (c.rubbing) w.origin_load.segment<6>(6 * c.sphere) += c.friction * w.origin_offset.segment<6>(6 * c.sphere) / dt;
+    for (const SpherePairContact& c : w.pair_contacts) {
+      if (!c.rubbing) continue;
+      Vector12d u;
+      u << w.origin_offset.segment<6>(6 * c.i), w.origin_offset.segment<6>(6 * c.j);
+      const Vector12d loads = c.friction * u / dt;
+      w.origin_load.segment<6>(6 * c.i) += loads.head<6>();
+      w.origin_load.segment<6>(6 * c.j) += loads.tail<6>();
+    }
+  }
+
   // A chain (the common case) goes to the block-tridiagonal solve unless a
   // self-contact appears: its blocks are assembled while the bonds are
   // evaluated, each bond's 12 x 12 Jacobian used where it is made and not
@@ -676,6 +734,7 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
     }
     rhs.segment<3>(6 * i) = drag.driving_force[i] + rod.external_forces[i];
     rhs.segment<3>(6 * i + 3) = drag.driving_torque[i] + rod.external_torques[i];
+    if (from_origin) rhs.segment<6>(6 * i) -= w.origin_load.segment<6>(6 * i);
   };
   // Bonds: loads at y_n and their Jacobian (K = -d loads / dy).
   BondLoads loads;
@@ -817,13 +876,17 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   // Positions with finite bond rotations (dynamics/finite_rotation_update.h:
   // the tangent update x + dx stretches a turning stiff rod, which then
   // stops turning); orientations by their exact rotation.
-  w.step_start = rod.positions;
+  w.step_start = from_origin ? *w.origin_positions : rod.positions;
   w.rotation_update.apply(rod, dy);
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d dx = rod.positions[i] - w.step_start[i];
-    const Eigen::Vector3d dphi = dy.segment<3>(6 * i + 3);
+    rod.orientations[i] = (quaternion_from_rotation_vector(dy.segment<3>(6 * i + 3)) * rod.orientations[i]).normalized();
+    // Over the whole step (from y0 for an iteration).
+    const Eigen::Vector3d dphi =
+        from_origin ? rotation_vector((rod.orientations[i] * (*w.origin_orientations)[i].inverse()).normalized())
+                    : Eigen::Vector3d(dy.segment<3>(6 * i + 3));
     w.last_dy.segment<3>(6 * i) = dx;  // newton_correction's drag term: the displacement taken
-    rod.orientations[i] = (quaternion_from_rotation_vector(dphi) * rod.orientations[i]).normalized();
+    w.last_dy.segment<3>(6 * i + 3) = dphi;
     result.velocities[i] = dx / dt;
     result.angular_velocities[i] = dphi / dt;
     result.largest_displacement = std::max(result.largest_displacement, dx.norm());

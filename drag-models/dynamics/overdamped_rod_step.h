@@ -136,6 +136,23 @@ class OverdampedRodSolver {
   void step(OverdampedRod& rod, const RodDrag& drag, double dt, const ChannelGeometry* geometry,
             const WallContactParameters* walls, OverdampedStepResult& result);
 
+  // One Newton iteration of the same backward-Euler step (issue 10, the
+  // pore "pop"): `rod` holds an iterate y* of the step that started at
+  // (start_positions, start_orientations) = y0, and the step is re-linearised
+  // about y* (bonds, wall and sphere contacts, their stiffness and the set of
+  // touching spheres all evaluated at y*):
+  //   (R/dt + K(y*) + C/dt) (y - y*) = F_drive + F_ext + F_bonds(y*) + F_contacts(y*) - (R + C) (y* - y0) / dt,
+  // the residual of backward Euler at y* (C: the friction secant about the
+  // previous velocities, as in step). `rod` is moved to y; the result holds
+  // velocities (y - y0) / dt over the whole step. Iterated, this converges to
+  // the backward-Euler state that the single linearised step only
+  // approximates, e.g. a sphere that the step carried into a wall it did not
+  // touch at y0 (no contact stiffness there) stops on the wall instead of
+  // ending deep in it.
+  void iterate(OverdampedRod& rod, const std::vector<Eigen::Vector3d>& start_positions,
+               const std::vector<Eigen::Quaterniond>& start_orientations, const RodDrag& drag, double dt,
+               const ChannelGeometry* geometry, const WallContactParameters* walls, OverdampedStepResult& result);
+
   // Times the factorisation's structure was analysed (a test hook: once for a
   // rod whose pattern does not change): for a chain, its band (sizes of the
   // block storage); otherwise the sparse LU's pattern.

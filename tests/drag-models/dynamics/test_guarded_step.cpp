@@ -160,6 +160,53 @@ TEST(GuardedStep, StepIntoAWallIsSubdividedAndEndsAtTheHertzEquilibrium) {
   EXPECT_NEAR(rod.positions[0].y(), 1.5e-6 - delta, 0.01 * delta);
 }
 
+TEST(GuardedStep, StiffSphereReachingAWallInTheStepStopsAtTheBackwardEulerContactForce) {
+  // Issue 10, the pore "pop": a step that carries a sphere onto a wall it
+  // did not touch at the step's start has no contact stiffness in its
+  // linearisation, so the sphere ends inside the wall by its free travel
+  // minus the gap. With E = 1.5e12 Pa a 100 nm overlap of a 3 um sphere is a
+  // Hertz force of ~0.08 N (here 9e7 times the push), within the old
+  // overlap limit (0.1 r = 150 nm); released in the next step it flung the
+  // stiff rod wedged in the pore ~1 um per substep at any substep. Backward
+  // Euler's own end state has the Hertz force that balances the push less
+  // the drag of crossing the gap: zeta (g + delta) / h = F - F_H(delta),
+  // solved here by bisection; the guard's Newton iterations on the contact
+  // set must land on it.
+  ChannelGeometry channel(1e-3, 1e-4, 20e-6);
+  WallContactParameters walls;
+  walls.youngs_modulus = 1.5e12;
+  const double r = 1.5e-6, gap = 0.2e-6, free_travel = 0.3e-6;
+  OverdampedRod rod;
+  rod.positions = {Eigen::Vector3d(5e-4, r + gap, 10e-6)};
+  rod.orientations = {Eigen::Quaterniond::Identity()};
+  rod.radii = {r};
+  const double zeta = 3 * kPi * 1e-3 * 3e-6, push = 1e-9;
+  rod.external_forces = {Eigen::Vector3d(0, -push, 0)};
+  rod.external_torques = {Eigen::Vector3d::Zero()};
+  RodDrag drag;
+  drag.resize(1);
+  drag.resistance[0] = zeta * Eigen::Matrix3d::Identity();
+  drag.rotational_resistance[0] = kPi * 1e-3 * 27e-18;
+  const double h = free_travel * zeta / push;  // 0.3 um of free travel: within the displacement limit
+  const double e_star = 1.5e12 / (1 - 0.09);
+  const auto hertz = [&](double delta) { return 4.0 / 3.0 * e_star * std::sqrt(r) * std::pow(delta, 1.5); };
+  double low = 0.0, high = 1e-6;  // the root of zeta (g + delta) / h + F_H(delta) - F
+  for (int k = 0; k < 200; ++k) {
+    const double mid = 0.5 * (low + high);
+    (zeta * (gap + mid) / h + hertz(mid) - push > 0.0 ? high : low) = mid;
+  }
+  const double exact_force = hertz(0.5 * (low + high));
+  EXPECT_NEAR(exact_force, push * (1.0 - gap / free_travel), 1e-3 * push);  // the overlap itself is ~1e-13 m
+  OverdampedRodSolver solver;
+  const GuardedStepReport report = guarded_rod_step(solver, rod, drag, {}, h, &channel, &walls);
+  const double overlap = r - rod.positions[0].y();
+  const double force = overlap > 0.0 ? hertz(overlap) : 0.0;
+  std::printf("end overlap %.3g m, Hertz force %.4g N (backward Euler %.4g N), %d substeps, %d contact iterations\n",
+              overlap, force, exact_force, report.substeps, report.contact_iterations);
+  EXPECT_NEAR(force, exact_force, 0.01 * exact_force);
+  EXPECT_GT(report.contact_iterations, 0);
+}
+
 TEST(GuardedStep, HopelessStepIsRefusedWithTheFiguresAndTheRodIsUnchanged) {
   // dt = 1e-3 s in a 1 m/s stream: ~500 diameters per step; even 1024
   // substeps move 0.5 d each: refused, naming dt and the displacement.

@@ -2,7 +2,8 @@
 # Levels 1-2 refitted to every resolved case of the campaign, in one command
 # (calibration/campaign/README.md):
 #   calibration/campaign/refit.sh BUILD_DIR
-# 1. collect: session-4 record + beta-range results -> calibration/data/*.csv,
+# 1. collect: session-4 record + beta-range results + the straight rows of the
+#    geometry campaign (N = 20; its wall, pore and bent cases are skipped) -> calibration/data/*.csv,
 #    campaign_summary.json, calibration/campaign/mesh_convergence.md
 # 2. hsrod_fit_campaign -> calibration/data/confinement_campaign.txt, its fit
 #    report, and the built-in table's parameters
@@ -21,7 +22,7 @@ build=${1:?usage: refit.sh BUILD_DIR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 cd "$root"
 data=calibration/data
-/usr/bin/python3 calibration/tools/hsrod_campaign.py collect calibration/campaign/session4 calibration/campaign/beta-range \
+/usr/bin/python3 calibration/tools/hsrod_campaign.py collect calibration/campaign/session4 calibration/campaign/beta-range calibration/campaign/geometry \
   --csv $data/resolved_campaign_per_sphere.csv --json $data/campaign_summary.json \
   --points $data/campaign_fit_points.csv --series $data/resolved_campaign_series.csv \
   --profiles $data/resolved_campaign_profiles.csv --mesh calibration/campaign/mesh_convergence.md

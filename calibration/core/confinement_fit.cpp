@@ -170,11 +170,32 @@ namespace {
 using namespace hsrod::confinement_form;
 
 struct Given {
-  std::function<double(double)> lone, c_inf, growth;
+  std::function<double(double)> lone, c_inf, growth, shielding;
   std::function<double(double, int)> divisor;
+  RodLayout layout;
 };
 
+// Sizes of the blocks of a rod form's parameters (RodLayout): the leading
+// polynomial, the growth k(beta), the shielding e(beta), the held growth.
+struct Blocks {
+  int poly = 0, growth = 0, shielding = 0, held = 0;
+};
+Blocks blocks(CurveForm form, int np, const RodLayout& l) {
+  Blocks b;
+  switch (form) {
+    case CurveForm::RodColumn: b.shielding = l.shielding_terms; break;
+    case CurveForm::RodColumnGrowth: b.growth = l.growth_terms, b.shielding = l.shielding_terms; break;
+    case CurveForm::RodVelocityRatio: b.held = l.held_growth_terms; break;
+    default: break;
+  }
+  b.poly = np - b.growth - b.shielding - b.held;
+  return b;
+}
+
+double given_shielding(const Given& g, double beta) { return g.shielding ? g.shielding(beta) : 0.0; }
+
 double curve_value(CurveForm form, const double* p, int np, double beta, int n, const Given& g) {
+  const Blocks k = blocks(form, np, g.layout);
   switch (form) {
     case CurveForm::SphereFriction:
       return np > 2 ? sphere_friction(beta, p[0], p[1], p[2])
@@ -183,18 +204,21 @@ double curve_value(CurveForm form, const double* p, int np, double beta, int n, 
     case CurveForm::SphereDriving:
       return np > 1 ? sphere_driving(beta, p[0], p[1]) : sphere_driving(beta, p[0]);
     case CurveForm::RodColumn:
-      return rod_n_law(polynomial(p, np, beta), 1.0, 0.0, n);
+      return rod_n_law(polynomial(p, k.poly, beta), 1.0, 0.0, n, polynomial(p + k.poly, k.shielding, beta));
     case CurveForm::RodColumnGrowth:
-      return rod_n_law(polynomial(p, np - 1, beta), 1.0, rod_growth(beta, p[np - 1]), n);
+      return rod_n_law(polynomial(p, k.poly, beta), 1.0, rod_growth(beta, p + k.poly, k.growth), n,
+                       polynomial(p + k.poly + k.growth, k.shielding, beta));
     case CurveForm::RodHeld: {
       const double ls = g.lone(beta);
-      return rod_n_law(g.c_inf(beta) * rod_driving_inf(beta, p, np), ls, g.growth(beta) * ls, n);
+      return rod_n_law(g.c_inf(beta) * rod_driving_inf(beta, p, np), ls, g.growth(beta) * ls, n,
+                       given_shielding(g, beta) * ls);
     }
     case CurveForm::RodVelocity:
-      return rod_velocity(g.c_inf(beta), rod_driving_inf(beta, p, np), g.lone(beta), g.growth(beta), g.growth(beta), n);
+      return rod_velocity(g.c_inf(beta), rod_driving_inf(beta, p, np), g.lone(beta), g.growth(beta), g.growth(beta), n,
+                          given_shielding(g, beta));
     case CurveForm::RodVelocityRatio:
-      return rod_velocity(g.c_inf(beta), rod_driving_inf(beta, p, np - 1), g.lone(beta), g.growth(beta),
-                          rod_growth(beta, p[np - 1]), n) /
+      return rod_velocity(g.c_inf(beta), rod_driving_inf(beta, p, k.poly), g.lone(beta), g.growth(beta),
+                          rod_growth(beta, p + k.poly, k.held), n, given_shielding(g, beta)) /
              g.divisor(beta, n);
   }
   return 0.0;
@@ -227,7 +251,7 @@ struct CurveResiduals {
 
 double CurveFit::operator()(double beta, int n) const {
   return curve_value(form, params.data(), static_cast<int>(params.size()), beta, n,
-                     {lone, rod_friction_inf, growth, divisor});
+                     {lone, rod_friction_inf, growth, shielding, divisor, layout});
 }
 
 double CurveFit::velocity(double beta, int n) const {
@@ -236,27 +260,41 @@ double CurveFit::velocity(double beta, int n) const {
 }
 
 double CurveFit::held_growth_at(double beta) const {
-  if (form == CurveForm::RodVelocityRatio) return confinement_form::rod_growth(beta, params.back());
+  if (form == CurveForm::RodVelocityRatio) {
+    const Blocks k = blocks(form, static_cast<int>(params.size()), layout);
+    return confinement_form::rod_growth(beta, params.data() + k.poly, k.held);
+  }
   return growth ? growth(beta) : 0.0;
 }
 
 double CurveFit::asymptote(double beta) const {
   const int np = static_cast<int>(params.size());
-  if (form == CurveForm::RodColumn) return confinement_form::polynomial(params.data(), np, beta);
-  if (form == CurveForm::RodColumnGrowth) return confinement_form::polynomial(params.data(), np - 1, beta);
-  if (form == CurveForm::RodHeld || form == CurveForm::RodVelocity)
-    return confinement_form::rod_driving_inf(beta, params.data(), np);
-  if (form == CurveForm::RodVelocityRatio) return confinement_form::rod_driving_inf(beta, params.data(), np - 1);
+  const Blocks k = blocks(form, np, layout);
+  if (form == CurveForm::RodColumn || form == CurveForm::RodColumnGrowth)
+    return confinement_form::polynomial(params.data(), k.poly, beta);
+  if (form == CurveForm::RodHeld || form == CurveForm::RodVelocity || form == CurveForm::RodVelocityRatio)
+    return confinement_form::rod_driving_inf(beta, params.data(), k.poly);
   return (*this)(beta, 1);
 }
 
 double CurveFit::growth_at(double beta) const {
-  return form == CurveForm::RodColumnGrowth ? confinement_form::rod_growth(beta, params.back()) : 0.0;
+  if (form != CurveForm::RodColumnGrowth) return 0.0;
+  const Blocks k = blocks(form, static_cast<int>(params.size()), layout);
+  return confinement_form::rod_growth(beta, params.data() + k.poly, k.growth);
+}
+
+double CurveFit::shielding_at(double beta) const {
+  if (form == CurveForm::RodColumn || form == CurveForm::RodColumnGrowth) {
+    const Blocks k = blocks(form, static_cast<int>(params.size()), layout);
+    return confinement_form::polynomial(params.data() + k.poly + k.growth, k.shielding, beta);
+  }
+  return shielding ? shielding(beta) : 0.0;
 }
 
 CurveFit fit_curve(CurveForm form, const std::vector<CurvePoint>& points, std::vector<double> start,
                    std::function<double(double)> lone, std::function<double(double)> rod_friction_inf,
-                   std::function<double(double)> growth, std::function<double(double, int)> divisor) {
+                   std::function<double(double)> growth, std::function<double(double, int)> divisor,
+                   const RodLayout& layout, std::function<double(double)> shielding) {
   const int np = static_cast<int>(start.size()), m = static_cast<int>(points.size());
   if (np < 1 || m < np) throw std::invalid_argument("fit_curve: need at least as many points as parameters");
   for (const auto& q : points)
@@ -272,7 +310,11 @@ CurveFit fit_curve(CurveForm form, const std::vector<CurvePoint>& points, std::v
     throw std::invalid_argument("fit_curve: the sphere friction has one to three parameters, the sphere driving one or two");
   if (form == CurveForm::RodColumnGrowth && np < 2)
     throw std::invalid_argument("fit_curve: RodColumnGrowth needs a polynomial term and k");
-  CurveResiduals res{form, &points, {lone, rod_friction_inf, growth, divisor}, np};
+  if (layout.growth_terms < 1 || layout.held_growth_terms < 1 || layout.shielding_terms < 0)
+    throw std::invalid_argument("fit_curve: the growth and held growth have at least one term, the shielding none or more");
+  if (blocks(form, np, layout).poly < 1)
+    throw std::invalid_argument("fit_curve: the start values leave no polynomial term after the layout's blocks");
+  CurveResiduals res{form, &points, {lone, rod_friction_inf, growth, shielding, divisor, layout}, np};
   Eigen::NumericalDiff<CurveResiduals> num(res);
   Eigen::LevenbergMarquardt<Eigen::NumericalDiff<CurveResiduals>> lm(num);
   Eigen::VectorXd x = Eigen::Map<Eigen::VectorXd>(start.data(), np);
@@ -284,7 +326,9 @@ CurveFit fit_curve(CurveForm form, const std::vector<CurvePoint>& points, std::v
   out.lone = lone;
   out.rod_friction_inf = rod_friction_inf;
   out.growth = growth;
+  out.shielding = shielding;
   out.divisor = divisor;
+  out.layout = layout;
   out.params.assign(x.data(), x.data() + np);
   Eigen::VectorXd f(m);
   res(x, f);

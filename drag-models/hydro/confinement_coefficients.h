@@ -77,16 +77,21 @@ class ConfinementTable {
 // mid-plane velocity 3/2, with room for fitted values); all finite.
 std::string coefficient_range_problem(const ConfinementCoefficients& c);
 
-// Growth coefficient k of the per-sphere friction of a rod moving across its
-// axis with the rod's length, g = k beta^2 in the n-law of
-// hydro/confinement_forms.h, fitted to the resolved campaign together with
-// the built-in table (default_coefficients.cpp) [-]. Level 2 uses it to
-// scale the table's 10-sphere rod columns to other rod lengths.
-double perpendicular_growth_coefficient();
-// k_held of the growth g_held = k_held beta^2 of the held-in-flow load per
-// sphere of a rod across the flow (confinement_form::rod_velocity), fitted
-// to the resolved r = U_perp / U_par with the built-in table [-].
-double perpendicular_held_growth_coefficient();
+// The rod-length law of level 2 (hydro/confinement_forms.h: rod_n_law,
+// rod_velocity), fitted to the resolved campaign together with the built-in
+// table (default_coefficients.cpp); level 2 uses them to scale the table's
+// 10-sphere rod columns to other rod lengths. All dimensionless, functions
+// of beta = d / H:
+// growth g = beta^2 k(beta) of the per-sphere friction of a rod moving
+// across its axis with the rod's length [-];
+double perpendicular_growth(double beta);
+// growth g_held = beta^2 k_held(beta) of the held-in-flow load per sphere of
+// a rod across the flow (confinement_form::rod_velocity), fitted to the
+// resolved r = U_perp / U_par [-];
+double perpendicular_held_growth(double beta);
+// the 3-D shielding e of the per-sphere friction along the axis (the e
+// ln(n)/n term of rod_n_law) [-].
+double parallel_shielding(double beta);
 
 // Faxen's series for a sphere midway between two parallel walls moving
 // parallel to them (Happel & Brenner 1965, eq. 7-4.28): friction over

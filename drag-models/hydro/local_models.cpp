@@ -79,22 +79,24 @@ void LocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow,
   const ConfinementCoefficients& c = coefficients_;
   // The table's rod columns are those of a rod of 10 sections; a rod of n
   // sections gets the n-law of hydro/confinement_forms.h,
-  // c(n) = c_inf + (c_1 - c_inf - g)/n + g n (two ends carry the lone
-  // sphere's excess; across the axis the depth-averaged pressure in front of
-  // the chain adds g = k beta^2), for the friction per sphere (c_1 = 1) and
-  // the held load per sphere c lambda (c_1 = the lone sphere's lambda, its
-  // own growth g_held lambda, g_held = k_held beta^2), so that n = 1 is the
-  // lone sphere of level 1. The forms, k and k_held are fitted to the
-  // resolved campaign (calibration/data/confinement_campaign_fit.json).
+  // c(n) = c_inf + (c_1 - c_inf - g)/n + g n + e ln(n)/n (two ends carry the
+  // lone sphere's excess; along the axis the 3-D shielding of neighbours
+  // closer than ~H adds e; across it the depth-averaged pressure in front of
+  // the chain adds g), for the friction per sphere (c_1 = 1) and the held
+  // load per sphere c lambda (c_1 = the lone sphere's lambda, its own growth
+  // g_held lambda and shielding e lambda), so that n = 1 is the lone sphere
+  // of level 1. The forms, g(beta), g_held(beta) and e(beta) are fitted to
+  // the resolved campaign (calibration/data/confinement_campaign_fit.json).
   const int n = rod.sections();
   using confinement_form::rod_n_law;
   using confinement_form::rod_n_law_asymptote;
   const double beta = parameters_.beta(), ls = c.sphere_driving;
-  const double g_perp = confinement_form::rod_growth(beta, perpendicular_growth_coefficient());
-  const double g_held = confinement_form::rod_growth(beta, perpendicular_held_growth_coefficient());
-  const double c_par = rod_n_law(rod_n_law_asymptote(c.parallel_friction, 1.0, 0.0, 10), 1.0, 0.0, n);
+  const double g_perp = perpendicular_growth(beta), g_held = perpendicular_held_growth(beta);
+  const double e_par = parallel_shielding(beta);
+  const double c_par = rod_n_law(rod_n_law_asymptote(c.parallel_friction, 1.0, 0.0, 10, e_par), 1.0, 0.0, n, e_par);
   const double c_perp = rod_n_law(rod_n_law_asymptote(c.perpendicular_friction, 1.0, g_perp, 10), 1.0, g_perp, n);
-  const double h_par = rod_n_law(rod_n_law_asymptote(c.parallel_friction * c.parallel_driving, ls, 0.0, 10), ls, 0.0, n);
+  const double h_par = rod_n_law(rod_n_law_asymptote(c.parallel_friction * c.parallel_driving, ls, 0.0, 10, e_par * ls),
+                                 ls, 0.0, n, e_par * ls);
   const double h_perp = rod_n_law(rod_n_law_asymptote(c.perpendicular_friction * c.perpendicular_driving, ls, g_held * ls, 10),
                                   ls, g_held * ls, n);
   sample_flow(rod, flow, out);

@@ -113,6 +113,57 @@ TEST(calibration_CurveFit, RodVelocitiesAndTheirRatioRecovered) {
   EXPECT_NEAR(qv.velocity(0.45, 10) / pv(0.45, 10), qv(0.45, 10), 1e-12);
 }
 
+TEST(calibration_CurveFit, ShieldingAndPolynomialGrowthsRecovered) {
+  // The session-9 layout (RodLayout): along the axis the 3-D shielding
+  // e ln(n)/n (e = 0.10), across it g = beta^2 (0.26 + 0.07 beta), the held
+  // growth g_held = beta^2 (0.25 + 0.13 beta - 0.16 beta^2); exact synthetic
+  // rods of n = 2, 5, 10, 20 at six beta give every block back, the
+  // asymptote inverts the n-law with its shielding, and n = 1 stays the lone
+  // sphere.
+  const auto lone = [](double b) { return 1.5 * (1.0 - b * b / 3.0); };
+  const double cp[2] = {0.22, 0.42}, cq[2] = {0.36, 0.9}, kg[2] = {0.26, 0.07}, kh[3] = {0.25, 0.13, -0.16};
+  const double qp[2] = {0.06, 0.30}, qq[2] = {0.04, 0.28};
+  const double e = 0.10;
+  std::vector<CurvePoint> par, perp, vel, ratio;
+  for (double b : {0.1, 0.2, 0.3, 0.45, 0.6, 0.75})
+    for (int n : {2, 5, 10, 20}) {
+      const double g = form::rod_growth(b, kg, 2), gh = form::rod_growth(b, kh, 3);
+      par.push_back({b, n, form::rod_n_law(form::polynomial(cp, 2, b), 1.0, 0.0, n, e), 1e-3});
+      perp.push_back({b, n, form::rod_n_law(form::polynomial(cq, 2, b), 1.0, g, n), 1e-3});
+      const double lp = form::rod_velocity(form::polynomial(cp, 2, b), form::rod_driving_inf(b, qp, 2), lone(b), 0, 0, n, e);
+      const double lq = form::rod_velocity(form::polynomial(cq, 2, b), form::rod_driving_inf(b, qq, 2), lone(b), g, gh, n);
+      vel.push_back({b, n, lp, 1e-3});
+      ratio.push_back({b, n, lq / lp, 1e-4});
+    }
+  RodLayout along;
+  along.shielding_terms = 1;
+  const CurveFit pf = fit_curve(CurveForm::RodColumn, par, {0.3, 0.0, 0.0}, {}, {}, {}, {}, along);
+  EXPECT_NEAR(pf.params[0], 0.22, 1e-6);
+  EXPECT_NEAR(pf.params[1], 0.42, 1e-6);
+  EXPECT_NEAR(pf.shielding_at(0.4), e, 1e-6);
+  EXPECT_NEAR(pf(0.4, 1), 1.0, 1e-12);
+  EXPECT_NEAR(form::rod_n_law_asymptote(pf(0.4, 10), 1.0, 0.0, 10, pf.shielding_at(0.4)), pf.asymptote(0.4), 1e-12);
+  const RodLayout across{2, 0, 3};
+  const CurveFit qf = fit_curve(CurveForm::RodColumnGrowth, perp, {0.3, 0.0, 0.3, 0.0}, {}, {}, {}, {}, across);
+  EXPECT_NEAR(qf.params[2], 0.26, 1e-5);
+  EXPECT_NEAR(qf.params[3], 0.07, 1e-5);
+  EXPECT_NEAR(qf.growth_at(0.5), form::rod_growth(0.5, kg, 2), 1e-6);
+  const CurveFit pv = fit_curve(CurveForm::RodVelocity, vel, {0.0, 0.0}, lone, [&](double b) { return pf.asymptote(b); },
+                                [](double) { return 0.0; }, {}, {}, [&](double b) { return pf.shielding_at(b); });
+  EXPECT_NEAR(pv.params[0], 0.06, 1e-5);
+  EXPECT_NEAR(pv.params[1], 0.30, 1e-5);
+  EXPECT_NEAR(pv(0.3, 1), lone(0.3), 1e-12);
+  const CurveFit qv = fit_curve(CurveForm::RodVelocityRatio, ratio, {0.0, 0.0, 0.3, 0.0, 0.0}, lone,
+                                [&](double b) { return qf.asymptote(b); }, [&](double b) { return qf.growth_at(b); },
+                                [&pv](double b, int n) { return pv(b, n); }, across);
+  ASSERT_EQ(qv.params.size(), 5u);
+  EXPECT_NEAR(qv.params[0], 0.04, 1e-4);
+  EXPECT_NEAR(qv.params[1], 0.28, 1e-4);
+  EXPECT_NEAR(qv.held_growth_at(0.6), form::rod_growth(0.6, kh, 3), 1e-5);
+  // a layout that leaves no polynomial term is refused
+  EXPECT_THROW(fit_curve(CurveForm::RodColumnGrowth, perp, {0.3, 0.3}, {}, {}, {}, {}, across), std::invalid_argument);
+}
+
 TEST(calibration_CurveFit, BadInputRefused) {
   const auto one = [](double) { return 1.0; };
   std::vector<CurvePoint> pts = {{0.3, 1, 1.4, 0.01}};

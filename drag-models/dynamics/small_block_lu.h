@@ -19,6 +19,7 @@ template <int N>
 class SmallBlockLu {
  public:
   using Matrix = Eigen::Matrix<double, N, N>;
+  using RowMajorMatrix = Eigen::Matrix<double, N, N, Eigen::RowMajor>;
 
   SmallBlockLu() = default;  // unfactorised (call compute before solving)
   // Factorises P a = L U in place of a copy of a.
@@ -34,7 +35,14 @@ class SmallBlockLu {
   // entry in the same order as solve_in_place, so the same result to the
   // last bit, in fewer, vectorised instructions).
   void solve_block_in_place(Matrix& b) const {
-    Eigen::Matrix<double, N, N, Eigen::RowMajor> x = b;
+    RowMajorMatrix x;
+    solve_block_in_place(b, x);
+  }
+  // The same for any N x N block b (a Map of group storage), leaving the
+  // solution also in `x`, row-major (for products that run along its rows).
+  template <typename Block>
+  void solve_block_in_place(Eigen::MatrixBase<Block>& b, Eigen::Matrix<double, N, N, Eigen::RowMajor>& x) const {
+    x = b;
 #pragma GCC unroll 8
     for (int k = 0; k < N; ++k)
       if (pivots_[k] != k) x.row(k).swap(x.row(pivots_[k]));

@@ -206,6 +206,46 @@ StepAssessment assess_step(const std::vector<Eigen::Vector3d>& x0, const Overdam
   return a;
 }
 
+// Whether a sphere of the rod touches a planform or gap wall (as the step's
+// own contact search finds it).
+bool touching_wall(const OverdampedRod& rod, const ChannelGeometry& geometry, const WallContactParameters& walls) {
+  for (int i = 0; i < rod.size(); ++i)
+    if (wall_contact(geometry, walls, rod.positions[i], rod.radii[i]).touching) return true;
+  return false;
+}
+
+// Whether every sphere at x is further than `band` [m] from touching a wall
+// or from leaving one (its centre's distance to each wall minus its radius).
+bool contact_set_settled(const std::vector<Eigen::Vector3d>& x, const std::vector<double>& radii,
+                         const ChannelGeometry& geometry, const WallContactParameters& walls, double band) {
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double r = radii[i];
+    if (walls.planform_walls && std::fabs(geometry.signed_distance(x[i].x(), x[i].y()) - r) <= band) return false;
+    if (walls.gap_walls && (std::fabs(x[i].z() - walls.gap_bottom - r) <= band ||
+                            std::fabs(walls.gap_bottom + geometry.gap_height() - x[i].z() - r) <= band))
+      return false;
+  }
+  return true;
+}
+
+// Step doubling's two half steps of h from the substep's start (ws.substep_*)
+// with the same drag, into ws.half (results: ws.first_half_result, then
+// ws.half_result); ws.halves_moved = the largest move of a sphere in either [m].
+void take_half_steps(OverdampedRodSolver& solver, const OverdampedRod& rod, const RodDrag& drag, double h,
+                     const ChannelGeometry* geometry, const WallContactParameters* walls, GuardWorkspace& ws) {
+  const int n = rod.size();
+  ws.half = rod;
+  ws.half.positions = ws.substep_positions;
+  ws.half.orientations = ws.substep_orientations;
+  solver.step(ws.half, drag, 0.5 * h, geometry, walls, ws.first_half_result);
+  double moved = 0.0;
+  for (int i = 0; i < n; ++i) moved = std::max(moved, (ws.half.positions[i] - ws.substep_positions[i]).norm());
+  ws.middle_positions = ws.half.positions;
+  solver.step(ws.half, drag, 0.5 * h, geometry, walls, ws.half_result);
+  for (int i = 0; i < n; ++i) moved = std::max(moved, (ws.half.positions[i] - ws.middle_positions[i]).norm());
+  ws.halves_moved = std::isfinite(moved) ? moved : HUGE_VAL;
+}
+
 }  // namespace
 
 StepAssessment assess_rod_step(const OverdampedRod& before, const OverdampedRod& after,
@@ -290,6 +330,7 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
     rod.orientations = q;
   };
   const RodDrag* current_drag = &drag;
+  const bool velocities_given = static_cast<int>(rod.velocities.size()) == n;
   double done = 0.0;  // time advanced [s]
   long level = 1;     // current substep = dt / level
   double previous_h = dt;  // adaptive: the last accepted substep [s]
@@ -306,81 +347,120 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
       const double h = std::min(dt / static_cast<double>(level), dt - done);
       ws.substep_positions = rod.positions;
       ws.substep_orientations = rod.orientations;
-      solver.step(rod, *current_drag, h, geometry, walls, ws.trial);
-      // Newton iterations where the wall-contact set changed in the step
-      // (StepGuardLimits::contact_iterations): the converged state is kept.
+      using NewtonCheck = StepGuardLimits::NewtonCheck;
+      // Quiet steps at a wall (header): the half steps first.
+      const double d = 2.0 * rod.radii[0];
+      const double contact_floor = 0.5 * limits.max_overlap * d;  // the doubling test's limit while touching [m]
+      const double quiet_move = 2e-3 * contact_floor;             // largest half-step move of a quiet step [m]
+      bool halves_ready = false, quiet = false;
+      StepAssessment a;
+      // Newton iterations on the wall contacts (below), where the full step is taken.
       bool contact_iterated = false, contact_converged = false;
       double contact_update = 0.0, contact_moved = 0.0;
-      if (limits.contact_iterations > 0 && geometry && walls) {
-        // Which spheres touch a wall, and their Hertz normal force [N].
-        const auto touching_set = [&](std::vector<char>& set, std::vector<double>* force = nullptr) {
-          set.resize(n);
-          if (force) force->assign(n, 0.0);
-          for (int i = 0; i < n; ++i) {
-            const WallContact c = wall_contact(*geometry, *walls, rod.positions[i], rod.radii[i]);
-            set[i] = c.touching;
-            if (force)
-              for (int k = 0; k < c.points; ++k) (*force)[i] += c.point[k].normal_force;
-          }
-        };
-        touching_set(ws.touching_end);
-        ws.iterate_positions = rod.positions;
-        rod.positions = ws.substep_positions;
-        touching_set(ws.touching_start);
-        rod.positions = ws.iterate_positions;
-        contact_iterated = ws.touching_start != ws.touching_end;
-        // Converged: the update is below max_step_error of the step's
-        // displacement (or 1e-6 d), the contact set no longer changes and
-        // every Hertz force changed by less than 1.5 max_step_error of itself
-        // (an overlap by max_step_error: a displacement test alone would stop
-        // a stiff contact at an overlap whose force is many times the loads),
-        // or by less than the force of an overlap of 1e-8 d.
-        const double d = 2.0 * rod.radii[0];
-        const double tolerance_floor = 1e-6 * d;
-        const double force_floor = 4.0 / 3.0 * walls->effective_modulus() * std::sqrt(0.5 * d) * std::pow(1e-8 * d, 1.5);
-        if (contact_iterated) touching_set(ws.touching_end, &ws.contact_force_end);
-        for (int k = 0; contact_iterated && k < limits.contact_iterations; ++k) {
+      if (ws.half_steps_first && !limits.adaptive && limits.newton_check != NewtonCheck::kNever && velocities_given &&
+          geometry && walls && touching_wall(rod, *geometry, *walls)) {
+        take_half_steps(solver, rod, *current_drag, h, geometry, walls, ws);
+        halves_ready = true;
+        if (ws.halves_moved <= quiet_move) {
+          a = assess_step(ws.substep_positions, ws.half, *current_drag, h, geometry, walls, limits);
+          // ... and no sphere within 8 half-step moves of touching or leaving
+          // a wall (the full step moves ~2x the first half step): the full
+          // step would keep the contact set (no Newton iterations on the
+          // contacts, whose result would be kept instead of the halves).
+          quiet = a.problem.empty() && a.displacement <= 0.5 * limits.max_displacement &&
+                  a.strain_change <= 0.5 * limits.max_strain_change && a.bond_strain <= limits.max_bond_strain - 0.01 &&
+                  contact_set_settled(ws.substep_positions, rod.radii, *geometry, *walls, 8.0 * ws.halves_moved);
+        }
+      }
+      if (quiet) {
+        // The two half steps, without the full step (header). The step's
+        // result: contacts at its start (those of the first half step, as
+        // the full step's), hydrodynamic forces at the mean velocity.
+        rod.positions = ws.half.positions;
+        rod.orientations = ws.half.orientations;
+        OverdampedStepResult& r = ws.trial;
+        r = ws.first_half_result;
+        r.largest_displacement = 0.0;
+        for (int i = 0; i < n; ++i) {
+          r.hydrodynamic_forces[i] = 0.5 * (ws.first_half_result.hydrodynamic_forces[i] + ws.half_result.hydrodynamic_forces[i]);
+          r.largest_displacement = std::max(r.largest_displacement, (rod.positions[i] - ws.substep_positions[i]).norm());
+        }
+        a.step_error = 0.0;  // not estimated (bounded far below the limit, header)
+        ++ws.quiet_steps;
+      } else {
+        solver.step(rod, *current_drag, h, geometry, walls, ws.trial);
+        // Newton iterations where the wall-contact set changed in the step
+        // (StepGuardLimits::contact_iterations): the converged state is kept.
+        if (limits.contact_iterations > 0 && geometry && walls) {
+          // Which spheres touch a wall, and their Hertz normal force [N].
+          const auto touching_set = [&](std::vector<char>& set, std::vector<double>* force = nullptr) {
+            set.resize(n);
+            if (force) force->assign(n, 0.0);
+            for (int i = 0; i < n; ++i) {
+              const WallContact c = wall_contact(*geometry, *walls, rod.positions[i], rod.radii[i]);
+              set[i] = c.touching;
+              if (force)
+                for (int k = 0; k < c.points; ++k) (*force)[i] += c.point[k].normal_force;
+            }
+          };
+          touching_set(ws.touching_end);
           ws.iterate_positions = rod.positions;
-          ws.touching_start.swap(ws.touching_end);  // the previous iterate's set and forces
-          ws.contact_force_start.swap(ws.contact_force_end);
-          solver.iterate(rod, ws.substep_positions, ws.substep_orientations, *current_drag, h, geometry, walls,
-                         ws.trial);
-          ++report.contact_iterations;
-          contact_update = contact_moved = 0.0;
-          for (int i = 0; i < n; ++i) {
-            contact_update = std::max(contact_update, (rod.positions[i] - ws.iterate_positions[i]).norm());
-            contact_moved = std::max(contact_moved, (rod.positions[i] - ws.substep_positions[i]).norm());
+          rod.positions = ws.substep_positions;
+          touching_set(ws.touching_start);
+          rod.positions = ws.iterate_positions;
+          contact_iterated = ws.touching_start != ws.touching_end;
+          // Converged: the update is below max_step_error of the step's
+          // displacement (or 1e-6 d), the contact set no longer changes and
+          // every Hertz force changed by less than 1.5 max_step_error of itself
+          // (an overlap by max_step_error: a displacement test alone would stop
+          // a stiff contact at an overlap whose force is many times the loads),
+          // or by less than the force of an overlap of 1e-8 d.
+          const double tolerance_floor = 1e-6 * d;
+          const double force_floor = 4.0 / 3.0 * walls->effective_modulus() * std::sqrt(0.5 * d) * std::pow(1e-8 * d, 1.5);
+          if (contact_iterated) touching_set(ws.touching_end, &ws.contact_force_end);
+          for (int k = 0; contact_iterated && k < limits.contact_iterations; ++k) {
+            ws.iterate_positions = rod.positions;
+            ws.touching_start.swap(ws.touching_end);  // the previous iterate's set and forces
+            ws.contact_force_start.swap(ws.contact_force_end);
+            solver.iterate(rod, ws.substep_positions, ws.substep_orientations, *current_drag, h, geometry, walls,
+                           ws.trial);
+            ++report.contact_iterations;
+            contact_update = contact_moved = 0.0;
+            for (int i = 0; i < n; ++i) {
+              contact_update = std::max(contact_update, (rod.positions[i] - ws.iterate_positions[i]).norm());
+              contact_moved = std::max(contact_moved, (rod.positions[i] - ws.substep_positions[i]).norm());
+            }
+            if (!std::isfinite(contact_update)) break;
+            touching_set(ws.touching_end, &ws.contact_force_end);
+            bool forces_settled = ws.touching_start == ws.touching_end;
+            for (int i = 0; i < n && forces_settled; ++i)
+              forces_settled = std::abs(ws.contact_force_end[i] - ws.contact_force_start[i]) <=
+                               1.5 * limits.max_step_error * std::max(ws.contact_force_end[i], force_floor);
+            if (forces_settled && contact_update <= limits.max_step_error * std::max(contact_moved, tolerance_floor)) {
+              contact_converged = true;
+              break;
+            }
           }
-          if (!std::isfinite(contact_update)) break;
-          touching_set(ws.touching_end, &ws.contact_force_end);
-          bool forces_settled = ws.touching_start == ws.touching_end;
-          for (int i = 0; i < n && forces_settled; ++i)
-            forces_settled = std::abs(ws.contact_force_end[i] - ws.contact_force_start[i]) <=
-                             1.5 * limits.max_step_error * std::max(ws.contact_force_end[i], force_floor);
-          if (forces_settled && contact_update <= limits.max_step_error * std::max(contact_moved, tolerance_floor)) {
-            contact_converged = true;
-            break;
+        }
+        a = assess_step(ws.substep_positions, rod, *current_drag, h, geometry, walls, limits);
+        if (contact_iterated) {
+          a.step_error = contact_update / std::max(contact_moved, 1e-300);
+          if (!std::isfinite(a.step_error)) a.step_error = HUGE_VAL;
+          if (!contact_converged && a.problem.empty()) {
+            std::ostringstream m;
+            m.precision(3);
+            m << "the Newton iterations on the wall contacts did not converge in " << limits.contact_iterations
+              << " (last update " << contact_update / (2.0 * rod.radii[0]) << " d)";
+            a.problem = m.str();
           }
         }
       }
       const OverdampedStepResult& r = ws.trial;
-      StepAssessment a = assess_step(ws.substep_positions, rod, *current_drag, h, geometry, walls, limits);
-      if (contact_iterated) {
-        a.step_error = contact_update / std::max(contact_moved, 1e-300);
-        if (!std::isfinite(a.step_error)) a.step_error = HUGE_VAL;
-        if (!contact_converged && a.problem.empty()) {
-          std::ostringstream m;
-          m.precision(3);
-          m << "the Newton iterations on the wall contacts did not converge in " << limits.contact_iterations
-            << " (last update " << contact_update / (2.0 * rod.radii[0]) << " d)";
-          a.problem = m.str();
-        }
-      }
-      using NewtonCheck = StepGuardLimits::NewtonCheck;
       const bool suspect = limits.newton_check == NewtonCheck::kAlways ||
                            (limits.newton_check == NewtonCheck::kWhenSuspect &&
                             (a.bond_load_ratio > limits.suspect_bond_load || r.wall_contact || r.self_contact));
-      if (a.problem.empty() && suspect && !contact_iterated) {
+      bool quiet_at_wall = quiet;  // this (sub)step, if accepted, was quiet at a wall
+      if (!quiet && a.problem.empty() && suspect && !contact_iterated) {
         // Newton error: one more (simplified) Newton iteration with the
         // step's factors. Not across a contact: a sphere touching a wall (or
         // another sphere) at the start or the end of the step makes the
@@ -389,7 +469,6 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
         // overshoots (a rod pressed against the pore chattered between the
         // step and its correction); there, and where the solver keeps no
         // factors, step doubling (with the same drag: no trial evaluation).
-        const double d = 2.0 * rod.radii[0];
         bool touching = r.wall_contact || r.self_contact;  // self-contact: the same Hertz impact
         if (!touching && geometry && walls) {
           for (int i = 0; i < n && !touching; ++i)
@@ -397,13 +476,8 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
         }
         const bool corrected =
             !touching && solver.newton_correction(rod, *current_drag, geometry, walls, ws.correction);
-        if (!corrected) {
-          ws.half = rod;
-          ws.half.positions = ws.substep_positions;
-          ws.half.orientations = ws.substep_orientations;
-          solver.step(ws.half, *current_drag, 0.5 * h, geometry, walls, ws.half_result);
-          solver.step(ws.half, *current_drag, 0.5 * h, geometry, walls, ws.half_result);
-        }
+        if (!corrected && !halves_ready) take_half_steps(solver, rod, *current_drag, h, geometry, walls, ws);
+        if (!corrected) quiet_at_wall = r.wall_contact && ws.halves_moved <= quiet_move;
         double difference = 0.0, moved = 0.0;
         for (int i = 0; i < n; ++i) {
           const Eigen::Vector3d change = corrected ? Eigen::Vector3d(ws.correction.segment<3>(6 * i))
@@ -455,7 +529,6 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
           error = std::max(error, h * h * (v - v_before).norm() / (h + h_before));
           moved = std::max(moved, h * v.norm());
         }
-        const double d = 2.0 * rod.radii[0];
         const bool touching = r.wall_contact || r.self_contact;
         const double floor = touching ? 0.5 * limits.max_overlap * d / limits.max_step_error : 1e-3 * d;
         a.truncation_error = error / std::max(moved, floor);
@@ -472,6 +545,9 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
           a.problem = m.str();
         }
       }
+      // The next (sub)step of this rod takes its half steps first when this
+      // one was accepted quiet at a wall.
+      ws.half_steps_first = a.problem.empty() && quiet_at_wall;
       if (!a.problem.empty()) {
         ++report.rejected_trials;
         if (level * 2 > limits.max_substeps) {

@@ -27,6 +27,23 @@
 // retried as substeps of half the size (the drag re-evaluated at each
 // substep's start through a callback), down to dt / max_substeps. A step
 // still failing then is refused with StepRefused naming the figures.
+// Quiet steps at a wall (a rod pressed against the pore, e.g. clogged:
+// most of a clogging run's steps): a (sub)step that starts with a sphere
+// touching a wall always goes to step doubling, which keeps the two half
+// steps and uses the full step only for the comparison. Where the last
+// accepted (sub)step was such a step and moved no sphere more than
+// 2e-3 of the contact floor (0.5 max_overlap d) per half step, the half
+// steps are taken first; if they are quiet again (the same bound) and pass
+// the checks above with a margin (half the displacement and strain-change
+// limits, max_bond_strain - 0.01) and no sphere is within 8 half-step moves
+// of touching or leaving a wall (the full step keeps the contact set, so no
+// Newton iterations on the contacts), they are accepted without the full step:
+// the full step of the same linearised system moves no sphere more than
+// ~2x the first half step, so its comparison (limit: the floor) and its own
+// checks would pass with a margin of > 100, and the accepted state is the
+// same two half steps, bit for bit. Otherwise the full step is taken and
+// judged as above. (Used when the caller gives the rod's velocities and
+// without `adaptive`.) 2 solves per such step instead of 3.
 // The drag is evaluated only at accepted states (no trial evaluations), so
 // a model that keeps state (level 4's windows) advances along the accepted
 // path only. This wraps the solver; it does not change it.
@@ -149,7 +166,15 @@ struct GuardWorkspace {
   RodDrag substep_drag;       // drag re-evaluated at a substep start
   Eigen::VectorXd correction;  // Newton correction (dx [m], dphi [rad])
   OverdampedRod half;          // step doubling (where no factors are kept)
-  OverdampedStepResult half_result;
+  OverdampedStepResult half_result, first_half_result;
+  // A cost hint, not state: the last accepted (sub)step of this rod was a
+  // quiet one at a wall (see guarded_rod_step: "quiet steps at a wall"), so
+  // the next one takes its half steps first. Either order gives the same
+  // accepted state; a fresh workspace (a restart) only pays one more solve.
+  bool half_steps_first = false;
+  std::vector<Eigen::Vector3d> middle_positions;  // after the first half step [m]
+  double halves_moved = 0.0;    // largest move of a sphere in either half step [m]
+  long quiet_steps = 0;         // (sub)steps accepted as quiet half steps, without the full step (a count)
   std::vector<Eigen::Vector3d> previous_velocities;  // adaptive: mean velocities of the last substep [m/s]
   std::vector<char> touching_start, touching_end;    // contact iterations: spheres on a wall
   std::vector<Eigen::Vector3d> iterate_positions;    // the last Newton iterate [m]

@@ -388,3 +388,63 @@ TEST(GuardedStep, DragIsEvaluatedOnlyAtAcceptedSubstepStarts) {
   std::printf("couple, dt 2e-5 s: %d substeps in 10 steps\n", substeps);
   EXPECT_GT(steps_with_substeps, 5);  // the case exercises rejections
 }
+
+TEST(GuardedStep, QuietStepsAtAWallSkipTheFullStepAndKeepTheSameStates) {
+  // A rod of 2x2 sections (the aspect-ratio-5 rods of Figs. 10b/11b) pushed
+  // against the side wall y = 0 comes to rest on it within a few steps (the
+  // Hertz contact relaxes in ~1e-8 s); from then on every step starts at the
+  // wall and goes to step doubling. Stepped with one workspace, the guard
+  // takes these quiet steps as their two half steps only (2 solves, not 3);
+  // with a fresh workspace per step it always takes the full step too. The
+  // states must be the same to the last bit, and at rest the wall carries
+  // the whole push (force balance).
+  const double d = 3e-6, push = 1e-10, dt = 2e-6;
+  RodSpec spec;
+  spec.number_of_sections = 6;
+  spec.sphere_diameter = d;
+  spec.angle = 0.5 * kPi;  // along x
+  spec.section_rows = 2;
+  spec.section_layers = 2;
+  spec.centre = Eigen::Vector3d(5e-4, 0.999 * 0.5 * d + 0.5 * d, 10e-6);  // lower row just touching y = 0
+  const OverdampedRod start = make_overdamped_rod(make_rod_layout(spec), {15e6, 0.3, d, 0.0}, d);
+  const int n = start.size();
+  ASSERT_EQ(n, 24);
+  ChannelGeometry channel(1e-3, 1e-4, 20e-6);
+  WallContactParameters walls;
+  walls.youngs_modulus = 15e6;
+  RodDrag drag;
+  drag.resize(n);
+  for (int i = 0; i < n; ++i) {
+    drag.resistance[i] = 3 * kPi * 1e-3 * d * Eigen::Matrix3d::Identity();
+    drag.rotational_resistance[i] = kPi * 1e-3 * d * d * d;
+  }
+  OverdampedRod reused = start, fresh = start;
+  for (OverdampedRod* rod : {&reused, &fresh}) {
+    for (Eigen::Vector3d& f : rod->external_forces) f = Eigen::Vector3d(0, -push, 0);
+    rod->velocities.assign(n, Eigen::Vector3d::Zero());  // as fix rod/implicit gives them
+    rod->angular_velocities.assign(n, Eigen::Vector3d::Zero());
+  }
+  OverdampedRodSolver reused_solver, fresh_solver;
+  GuardWorkspace workspace;
+  const StepGuardLimits limits;
+  const int steps = 200;
+  double wall_force = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    const std::vector<Eigen::Vector3d> before = reused.positions;
+    const GuardedStepReport r = guarded_rod_step(reused_solver, reused, drag, {}, dt, &channel, &walls, limits, workspace);
+    GuardWorkspace once;
+    guarded_rod_step(fresh_solver, fresh, drag, {}, dt, &channel, &walls, limits, once);
+    for (int i = 0; i < n; ++i) {
+      ASSERT_EQ(reused.positions[i], fresh.positions[i]) << "step " << k << " sphere " << i;
+      ASSERT_EQ(reused.orientations[i].coeffs(), fresh.orientations[i].coeffs()) << "step " << k << " sphere " << i;
+      reused.velocities[i] = fresh.velocities[i] = (reused.positions[i] - before[i]) / dt;
+    }
+    wall_force = r.result.wall_force;
+  }
+  std::printf("2x2 rod at the wall: %ld of %d steps quiet; solves %ld (one workspace) against %ld (fresh)\n",
+              workspace.quiet_steps, steps, reused_solver.statistics().steps, fresh_solver.statistics().steps);
+  EXPECT_GT(workspace.quiet_steps, steps - 10);
+  EXPECT_LT(reused_solver.statistics().steps, 2 * steps + 30);
+  EXPECT_EQ(fresh_solver.statistics().steps, 3 * steps);
+  EXPECT_NEAR(wall_force, n * push, 1e-6 * n * push);
+}

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -62,10 +65,57 @@ bool in_wall(const Eigen::Vector3d& p, const ChannelGeometry& geometry, const Wa
   return in_gap_wall(p, geometry, walls);
 }
 
-// Work storage of assess_step (its start distances), kept between steps.
+// Planform signed distances [m] of sphere centres that assess_step has
+// evaluated, by sphere, with the centre's (x, y) bits: the next call's start
+// centres are the last call's end centres (an accepted substep) or start
+// centres (a rejected one, restored), so each distance is looked up instead
+// of recomputed (ChannelGeometry::signed_distance is a pure function of
+// (x, y): the same value to the last bit). Callgrind, level 1 pore passage:
+// 26 940 -> ~13 500 distances.
+struct KnownDistances {
+  const ChannelGeometry* geometry = nullptr;
+  std::uint64_t identity = 0;  // geometry->identity() of the distances kept
+  std::vector<std::uint64_t> x_bits, y_bits;  // per sphere, two slots (start 2i, end 2i + 1)
+  std::vector<double> distance;               // [m]
+  static std::uint64_t bits(double v) {
+    std::uint64_t b;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+  }
+  void reset(const ChannelGeometry* g, int n) {
+    geometry = g;
+    if (g->identity() != identity || static_cast<int>(distance.size()) != 2 * n) {
+      identity = g->identity();
+      // Empty slots: all-ones bits (a NaN) and a NaN distance, what
+      // signed_distance gives for a centre with those bits.
+      x_bits.assign(2 * n, ~std::uint64_t{0});
+      y_bits.assign(2 * n, ~std::uint64_t{0});
+      distance.assign(2 * n, std::numeric_limits<double>::quiet_NaN());
+    }
+  }
+  // The distance of sphere i's centre p, from a slot if known.
+  double of(int i, const Eigen::Vector3d& p) const {
+    const std::uint64_t bx = bits(p.x()), by = bits(p.y());
+    for (int slot = 2 * i; slot <= 2 * i + 1; ++slot)
+      if (x_bits[slot] == bx && y_bits[slot] == by) return distance[slot];
+    return geometry->signed_distance(p.x(), p.y());
+  }
+  void keep(int slot, const Eigen::Vector3d& p, double d) {
+    x_bits[slot] = bits(p.x());
+    y_bits[slot] = bits(p.y());
+    distance[slot] = d;
+  }
+};
+
+// Work storage of assess_step (its start distances and the known
+// distances), kept between steps.
 std::vector<double>& thread_local_start_distance() {
   thread_local std::vector<double> distances;
   return distances;
+}
+KnownDistances& thread_local_known_distances() {
+  thread_local KnownDistances known;
+  return known;
 }
 
 }  // namespace
@@ -126,13 +176,16 @@ StepAssessment assess_step(const std::vector<Eigen::Vector3d>& x0, const Overdam
   // gap walls are then checked along it (the same answers, fewer distances;
   // the start's distance is kept for the overlap check below).
   std::vector<double>& start_distance = thread_local_start_distance();
+  KnownDistances& known = thread_local_known_distances();
   if (limits.check_walls && geometry) {
     start_distance.assign(n, 0.0);
+    known.reset(geometry, n);
     for (int i = 0; i < n && a.crossing_sphere < 0; ++i) {
       const Eigen::Vector3d step = after.positions[i] - x0[i];
       const int samples = std::clamp(static_cast<int>(std::ceil(step.norm() / (0.25 * after.radii[i]))), 1, 64);
-      const double d0 = geometry->signed_distance(x0[i].x(), x0[i].y());
+      const double d0 = known.of(i, x0[i]);
       start_distance[i] = d0;
+      known.keep(2 * i, x0[i], d0);
       const double reach = step.head<2>().norm();
       const bool planform_clear = d0 - reach > 1e-9 * (std::fabs(d0) + reach);
       for (int k = 1; k <= samples; ++k) {
@@ -158,7 +211,9 @@ StepAssessment assess_step(const std::vector<Eigen::Vector3d>& x0, const Overdam
         return o;
       };
       const Eigen::Vector3d& p1 = after.positions[i];
-      const double grown = overlap(p1, geometry->signed_distance(p1.x(), p1.y())) -
+      const double d1 = geometry->signed_distance(p1.x(), p1.y());
+      known.keep(2 * i + 1, p1, d1);
+      const double grown = overlap(p1, d1) -
                            std::max(0.0, overlap(x0[i], start_distance[i]));
       if (grown > limits.max_overlap * radius) {
         a.crossing_sphere = i;

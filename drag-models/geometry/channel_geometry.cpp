@@ -1,5 +1,7 @@
 #include "geometry/channel_geometry.h"
 
+#include <atomic>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -29,6 +31,13 @@ void require_positive(double value, const char* name) {
 
 }  // namespace
 
+namespace {
+std::uint64_t next_identity() {
+  static std::atomic<std::uint64_t> count{0};
+  return ++count;
+}
+}  // namespace
+
 ChannelGeometry::ChannelGeometry(double length, double width, double gap_height, double x_lo,
                                  double y_lo, std::vector<ZCylinder> cylinders)
     : length_(length),
@@ -36,7 +45,8 @@ ChannelGeometry::ChannelGeometry(double length, double width, double gap_height,
       gap_height_(gap_height),
       x_lo_(x_lo),
       y_lo_(y_lo),
-      cylinders_(std::move(cylinders)) {
+      cylinders_(std::move(cylinders)),
+      identity_(next_identity()) {
   require_positive(length_, "length L");
   require_positive(width_, "width W");
   require_positive(gap_height_, "gap_height H");

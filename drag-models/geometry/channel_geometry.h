@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <vector>
 
 namespace hsrod {
@@ -44,6 +45,10 @@ class ChannelGeometry {
   double y_lo() const { return y_lo_; }              // lower side wall [m]
   double y_hi() const { return y_lo_ + width_; }     // upper side wall [m]
   const std::vector<ZCylinder>& cylinders() const { return cylinders_; }
+  // A number given to each constructed geometry (copies share it, the walls
+  // never change after construction): equal identities mean equal walls, so
+  // a caller may keep distances it computed against one.
+  std::uint64_t identity() const { return identity_; }
 
   // True when the planform has no obstacle (all cylinders of zero radius).
   bool is_straight() const;
@@ -83,6 +88,7 @@ class ChannelGeometry {
  private:
   double length_, width_, gap_height_, x_lo_, y_lo_;
   std::vector<ZCylinder> cylinders_;
+  std::uint64_t identity_;
 };
 
 }  // namespace hsrod

@@ -61,13 +61,19 @@ void StaggeredField::interpolate(const ExtendedLattice& lat, const std::vector<d
   const int i0 = std::clamp(static_cast<int>(std::floor(fx)), lat.i_min + 1, lat.i_max - 2);
   const int j0 = std::clamp(static_cast<int>(std::floor(fy)), lat.j_min + 1, lat.j_max - 2);
   const double tx = std::clamp(fx - i0, 0.0, 1.0), ty = std::clamp(fy - j0, 0.0, 1.0);
+  // The 4 x 4 stencil: four runs of four nodes, one lattice row apart
+  // (index(i, j) = (i - i_min) ny_ext + (j - j_min)); NaN (inside a wall)
+  // tested without a branch per node.
   double node[4][4];
-  bool complete = true;
+  const double* corner = data.data() + lat.index(i0 - 1, j0 - 1);
+  const int row = lat.ny_ext();
+  bool missing = false;
   for (int a = 0; a < 4; ++a)
     for (int b = 0; b < 4; ++b) {
-      node[a][b] = data[lat.index(i0 - 1 + a, j0 - 1 + b)];
-      complete = complete && !std::isnan(node[a][b]);
+      node[a][b] = corner[a * row + b];
+      missing |= std::isnan(node[a][b]);
     }
+  const bool complete = !missing;
   if (complete) {
     double wx[4], dwx[4], wy[4], dwy[4];
     catmull_rom(tx, wx, dwx);

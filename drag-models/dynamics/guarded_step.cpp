@@ -261,8 +261,8 @@ StepAssessment assess_step(const std::vector<Eigen::Vector3d>& x0, const Overdam
       a.problem = "a bond's axial strain reaches " + g3(a.bond_strain) + " (limit max_bond_strain " +
                   g3(limits.max_bond_strain) + ")";
     else if (a.crossing_sphere >= 0)
-      a.problem = "sphere " + std::to_string(a.crossing_sphere) + " of the rod would cross or enter a wall (new overlap > " +
-                  g3(limits.max_overlap) + " radii)";
+      a.problem = "sphere " + std::to_string(a.crossing_sphere) +
+                  " of the rod would cross or enter a wall (new overlap > " + g3(limits.max_overlap) + " radii)";
     else
       a.problem = "sphere " + std::to_string(a.interpenetrating_sphere) +
                   " would press into a sphere of another rod (new overlap > " + g3(limits.max_overlap) + " radii)";

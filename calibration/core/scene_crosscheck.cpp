@@ -7,6 +7,7 @@
 #include "flow/background_flow.h"
 #include "flow/make_background_flow.h"
 #include "hydro/hydrodynamic_model.h"
+#include "hydro/local_models.h"
 #include "level_crosscheck.h"
 #include "resolved_campaign.h"
 
@@ -93,37 +94,60 @@ std::vector<SceneCase> read_scene_cases(const std::string& path) {
   return out;
 }
 
-std::vector<Eigen::Vector2d> scene_forces(const std::string& model_name, const SceneCase& c,
-                                          const ConfinementTable& table, const NearFieldCalibration& near_field) {
-  const HydrodynamicParameters p{c.mu, c.gap_height(), c.d};
-  const std::unique_ptr<HydrodynamicModel> model = make_level_model(model_name, p, table, near_field);
-  RodGeometry rod;
-  rod.sphere_diameter = c.d;
-  rod.positions = c.positions;
-  const int n = rod.size();
+SceneLoad scene_load(const SceneCase& c) {
+  SceneLoad load;
+  load.rod.sphere_diameter = c.d;
+  load.rod.positions = c.positions;
+  const int n = load.rod.size();
   const double a = c.drag_angle_deg * kPi / 180.0;
   const Eigen::Vector2d e(std::cos(a), std::sin(a));
-  std::unique_ptr<BackgroundFlow> flow;
   if (c.geometry == "bent") {
     // the wide slit: a planform 1000 H wide around the rod (no side wall within reach)
     const double big = 1000.0 * c.gap_height();
     const ChannelGeometry slit(big, big, c.gap_height(), -0.5 * big, -0.5 * big);
-    flow = std::make_unique<UniformFlow>(slit, c.load == "driving" ? Eigen::Vector2d(c.U * e) : Eigen::Vector2d::Zero());
+    load.flow =
+        std::make_unique<UniformFlow>(slit, c.load == "driving" ? Eigen::Vector2d(c.U * e) : Eigen::Vector2d::Zero());
   } else if (c.load == "driving") {
-    flow = make_background_flow(channel_of(c), FluidProperties{c.mu, 1000.0}, Inflow::mean_velocity(c.U));
+    load.flow = make_background_flow(channel_of(c), FluidProperties{c.mu, 1000.0}, Inflow::mean_velocity(c.U));
   } else {
-    flow = std::make_unique<UniformFlow>(channel_of(c), Eigen::Vector2d::Zero());
+    load.flow = std::make_unique<UniformFlow>(channel_of(c), Eigen::Vector2d::Zero());
   }
-  RodDrag drag;
-  model->evaluate(rod, *flow, drag);
-  Eigen::VectorXd v = Eigen::VectorXd::Zero(3 * n);
+  load.velocities = Eigen::VectorXd::Zero(3 * n);
   if (c.load == "friction")
-    for (int i = 0; i < n; ++i) v.segment<2>(3 * i) = -c.U * e;
-  const Eigen::VectorXd f = drag.forces(v);
-  const double scale = 3.0 * kPi * c.mu * c.d * c.U;
+    for (int i = 0; i < n; ++i) load.velocities.segment<2>(3 * i) = -c.U * e;
+  load.force_scale = 3.0 * kPi * c.mu * c.d * c.U;
+  return load;
+}
+
+namespace {
+std::vector<Eigen::Vector2d> scaled(const RodDrag& drag, const SceneLoad& load) {
+  const Eigen::VectorXd f = drag.forces(load.velocities);
   std::vector<Eigen::Vector2d> out;
-  for (int i = 0; i < n; ++i) out.emplace_back(f(3 * i) / scale, f(3 * i + 1) / scale);
+  for (int i = 0; i < load.rod.size(); ++i)
+    out.emplace_back(f(3 * i) / load.force_scale, f(3 * i + 1) / load.force_scale);
   return out;
+}
+}  // namespace
+
+std::vector<Eigen::Vector2d> scene_forces(const std::string& model_name, const SceneCase& c,
+                                          const ConfinementTable& table, const NearFieldCalibration& near_field,
+                                          const WallProximityCalibration& wall) {
+  const HydrodynamicParameters p{c.mu, c.gap_height(), c.d};
+  const std::unique_ptr<HydrodynamicModel> model = make_level_model(model_name, p, table, near_field);
+  if (auto* local = dynamic_cast<LocalDragBase*>(model.get()))
+    local->set_wall_proximity(wall.for_level(model->level()));
+  const SceneLoad load = scene_load(c);
+  RodDrag drag;
+  model->evaluate(load.rod, *load.flow, drag);
+  return scaled(drag, load);
+}
+
+std::vector<Eigen::Vector2d> wall_proximity_forces(const WallProximityLaw& law, const SceneCase& c,
+                                                   const SceneLoad& load) {
+  RodDrag drag;
+  drag.resize(load.rod.size());
+  add_wall_proximity(law, load.rod, *load.flow, c.mu, c.gap_height(), drag);
+  return scaled(drag, load);
 }
 
 double profile_rms(const std::vector<Eigen::Vector2d>& model, const std::vector<Eigen::Vector2d>& resolved) {

@@ -18,7 +18,12 @@
 #include <vector>
 
 #include "hydro/confinement_coefficients.h"
+#include "flow/background_flow.h"
+#include "hydro/hydrodynamic_model.h"
 #include "hydro/near_field_coupling.h"
+#include "hydro/wall_proximity.h"
+
+#include <memory>
 
 namespace hsrod::calib {
 
@@ -44,9 +49,28 @@ struct SceneCase {
 // spheres in id order. Throws std::runtime_error naming the file on bad input.
 std::vector<SceneCase> read_scene_cases(const std::string& path);
 
-// The model's per-sphere in-plane force / (3 pi mu d U) for the case.
+// The model's per-sphere in-plane force / (3 pi mu d U) for the case, with
+// the near-wall correction `wall` (hydro/wall_proximity.h; default: the
+// built-in fit).
 std::vector<Eigen::Vector2d> scene_forces(const std::string& model, const SceneCase& c, const ConfinementTable& table,
-                                          const NearFieldCalibration& near_field = NearFieldCalibration::built_in());
+                                          const NearFieldCalibration& near_field = NearFieldCalibration::built_in(),
+                                          const WallProximityCalibration& wall = WallProximityCalibration::built_in());
+
+// What a case's load is made of: the rod, the flow the levels see (the
+// channel at rest or in flow, or the wide slit) and the sphere velocities [m/s].
+struct SceneLoad {
+  RodGeometry rod;
+  std::unique_ptr<BackgroundFlow> flow;
+  Eigen::VectorXd velocities;  // 3n
+  double force_scale = 1.0;    // 3 pi mu d U [N]
+};
+SceneLoad scene_load(const SceneCase& c);
+
+// The near-wall correction `law` alone (its change of the per-sphere force,
+// over 3 pi mu d U): the correction is additive to every level's load, so a
+// fit evaluates the levels once without it and adds this.
+std::vector<Eigen::Vector2d> wall_proximity_forces(const WallProximityLaw& law, const SceneCase& c,
+                                                   const SceneLoad& load);
 
 // RMS over the spheres of |model - resolved| over the mean |resolved| [-].
 double profile_rms(const std::vector<Eigen::Vector2d>& model, const std::vector<Eigen::Vector2d>& resolved);

@@ -26,6 +26,14 @@ LocalDragBase::LocalDragBase(const HydrodynamicParameters& p, const ConfinementT
   rotational_friction_ = kPi * p.viscosity * d * d * d;
 }
 
+const WallProximityLaw& LocalDragBase::wall_proximity() const {
+  return wall_override_ ? *wall_override_ : WallProximityCalibration::built_in().for_level(level());
+}
+
+void LocalDragBase::apply_wall_proximity(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
+  add_wall_proximity(wall_proximity(), rod, flow, parameters_.viscosity, parameters_.gap_height, out);
+}
+
 double LocalDragBase::obstruction_friction() const {
   return sphere_friction_ * std::min(1.0, coefficients_.sphere_driving / 1.5);
 }
@@ -53,6 +61,7 @@ void LocalDragBase::sample_flow(const RodGeometry& rod, const BackgroundFlow& fl
 
 void IsotropicSphereModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState*) const {
   isolated_spheres(rod, flow, out);
+  apply_wall_proximity(rod, flow, out);
 }
 
 void LocalDragBase::isolated_spheres(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
@@ -72,6 +81,7 @@ void LocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow,
   // (the rod columns of the table are those of a 10-sphere rod).
   if (rod.sections() < 2) {
     isolated_spheres(rod, flow, out);
+    apply_wall_proximity(rod, flow, out);
     return;
   }
   out.resize(rod.size());
@@ -110,6 +120,7 @@ void LocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow,
     out.resistance[i] = sphere_friction_ * (c_par * along + c_perp * across);
     out.driving_force[i] = sphere_friction_ * (h_par * along + h_perp * across) * u;
   }
+  apply_wall_proximity(rod, flow, out);
 }
 
 }  // namespace hsrod

@@ -2,12 +2,21 @@
 #pragma once
 
 #include "hydro/hydrodynamic_model.h"
+#include "hydro/wall_proximity.h"
+
+#include <optional>
 
 namespace hsrod {
 
 class LocalDragBase : public HydrodynamicModel {
  public:
   LocalDragBase(const HydrodynamicParameters& parameters, const ConfinementTable& table);
+  // The near-wall correction this model applies (hydro/wall_proximity.h):
+  // the built-in fit for its level unless replaced by set_wall_proximity
+  // (calibration tools: a law being fitted, or WallProximityCalibration::off();
+  // call before the first evaluate).
+  const WallProximityLaw& wall_proximity() const;
+  void set_wall_proximity(const WallProximityLaw& law) { wall_override_ = law; }
 
  protected:
   HydrodynamicParameters parameters_;
@@ -27,6 +36,11 @@ class LocalDragBase : public HydrodynamicModel {
   // zeta lambda / (3/2); the rest, zeta - zeta_o, is film friction with the
   // gap walls (see nonlocal_model.h).
   double obstruction_friction() const;
+  // Adds the near-wall correction to the finished load (every level's evaluate ends with it).
+  void apply_wall_proximity(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const;
+
+ private:
+  std::optional<WallProximityLaw> wall_override_;
 };
 
 // Level 1: every sphere is an isolated confined sphere,

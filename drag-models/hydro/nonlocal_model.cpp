@@ -101,6 +101,7 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
     out.driving_force[i] << driving.segment<2>(2 * i), kMidplaneFactor * (zo * out.driving_force[i].z());
     out.resistance[i] = resistance.block<3, 3>(3 * i, 3 * i);
   }
+  apply_wall_proximity(rod, flow, out);
 }
 
 void NonlocalRodModel::evaluate_rods(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, RodDrag& out,

@@ -75,6 +75,7 @@ void NearFieldTwoWayModel::evaluate(const RodGeometry& rod, const BackgroundFlow
                                     ModelState* state) const {
   TwoWayWindowModel::evaluate(rod, flow, out, state);
   add_near_field(rod, parameters_, film_friction(), obstruction_friction(), near_field_, out);
+  apply_wall_proximity(rod, flow, out);
 }
 
 }  // namespace hsrod

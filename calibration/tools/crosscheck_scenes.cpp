@@ -4,7 +4,7 @@
 //
 //   hsrod_crosscheck_scenes CASES.csv OUT.csv [--levels isotropic,local,nonlocal,twoway]
 //                           [--table FILE] [--near-field FILE|off] [--label TEXT]
-//                           [--wall-record FILE]
+//                           [--wall-record FILE] [--wall-record-cpp FILE]
 //
 // CASES.csv: calibration/data/resolved_geometry_per_sphere.csv
 // (calibration/tools/geometry_cases.py; the finest mesh of every case is
@@ -21,7 +21,9 @@
 // Prints per level the worst errors per geometry and gap. --wall-record: the
 // same worst errors as CSV (level, geometry, beta, gap over d and over H,
 // totals, profile RMS), the material for an error model of `auto` that uses
-// the distance to walls and pores (calibration/data/level_error_near_walls.csv).
+// the distance to walls and pores (calibration/data/level_error_near_walls.csv);
+// --wall-record-cpp: the same rows (walls and pores) as `auto`'s built-in
+// near-wall record (drag-models/hydro/auto_near_wall_record.cpp).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -32,6 +34,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "hydro/model_registry.h"
 #include "scene_crosscheck.h"
 
 using namespace hsrod::calib;
@@ -48,6 +51,8 @@ int main(int argc, char** argv) {
   app.add_option("--label", label, "label of this table in the output");
   std::string wall_record;
   app.add_option("--wall-record", wall_record, "write the worst errors per level, geometry and gap (CSV)");
+  std::string wall_record_cpp;
+  app.add_option("--wall-record-cpp", wall_record_cpp, "write the near-wall rows as auto's built-in record (C++)");
   CLI11_PARSE(app, argc, argv);
   try {
     const hsrod::ConfinementTable table =
@@ -70,6 +75,8 @@ int main(int argc, char** argv) {
              << table.source() << "\nlevel,geometry,beta,gap_over_d,gap_over_H,cases,force_error,profile_rms\n";
       record.precision(4);
     }
+    std::ostringstream cpp_rows;
+    cpp_rows.precision(6);
     std::stringstream levels_in(levels);
     std::string level;
     while (std::getline(levels_in, level, ',')) {
@@ -136,9 +143,37 @@ int main(int argc, char** argv) {
           record << gap << ',' << gap * beta << ',';
         record << cell.cases << ',' << cell.force << ',' << cell.rms << '\n';
       }
+      for (const auto& [key, cell] : cells) {
+        const auto& [geometry, beta, gap] = key;
+        const hsrod::ModelEntry* entry = hsrod::find_model(level);
+        if (geometry == "bent" || !entry) continue;
+        cpp_rows << "      {" << entry->level << ", " << (geometry == "pore" ? "true" : "false") << ", " << beta << ", "
+                 << gap << ", " << cell.force << ", " << cell.rms << "},\n";
+      }
       for (const auto& [group, w] : worst)
         std::printf("%-10s %-9s %-22s worst |error|: totals %6.1f %%, per-sphere profile RMS %6.1f %%\n", label.c_str(),
                     level.c_str(), group.c_str(), 100 * w.first, 100 * w.second);
+    }
+    if (!wall_record_cpp.empty()) {
+      std::ofstream f(wall_record_cpp);
+      f << "// The near-wall record of `auto` (hydro/auto_model_choice.h), written by\n"
+           "//   /usr/bin/python3 calibration/validation/crosscheck_report.py build --scenes-only\n"
+           "// (hsrod_crosscheck_scenes ... --wall-record calibration/data/level_error_near_walls.csv\n"
+           "//  --wall-record-cpp drag-models/hydro/auto_near_wall_record.cpp).\n"
+           "// Do not edit: regenerate when a level changes (test\n"
+           "// calibration_AutoErrorModel.BuiltInNearWallRecordIsTheRecordedFile fails otherwise).\n"
+           "#include \"hydro/auto_model_choice.h\"\n\nnamespace hsrod {\n\n"
+           "const char* near_wall_error_record_provenance() {\n  return \"hsrod_crosscheck_scenes --wall-record on "
+        << (cases_path.find("calibration/data/") != std::string::npos
+                ? cases_path.substr(cases_path.find("calibration/data/"))
+                : cases_path)
+        << " (levels with their built-in near-wall correction), table: " << table.source()
+        << "\";\n}\n\n"
+           "const std::vector<NearWallErrorRow>& near_wall_error_record() {\n"
+           "  // level, pore, beta, gap_over_d, force_error, profile_rms\n"
+           "  static const std::vector<NearWallErrorRow> rows = {\n"
+        << cpp_rows.str() << "  };\n  return rows;\n}\n\n}  // namespace hsrod\n";
+      std::printf("wrote %s\n", wall_record_cpp.c_str());
     }
     std::printf("wrote %s\n", out_path.c_str());
   } catch (const std::exception& e) {

@@ -188,7 +188,8 @@ def scene_section(build, tmp, md):
     out = os.path.join(tmp, "scenes.csv")
     log = subprocess.run([os.path.join(build, "hsrod_crosscheck_scenes"),
                           os.path.join(DATA, "resolved_geometry_per_sphere.csv"), out,
-                          "--wall-record", os.path.join(DATA, "level_error_near_walls.csv")],
+                          "--wall-record", os.path.join(DATA, "level_error_near_walls.csv"),
+                          "--wall-record-cpp", os.path.join(ROOT, "drag-models", "hydro", "auto_near_wall_record.cpp")],
                          capture_output=True, text=True, check=True).stdout
     rows = read(out)
     with open(os.path.join(DATA, "geometry_crosscheck.csv"), "w") as f:

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 
 namespace hsrod {
@@ -62,6 +63,53 @@ double missed_deflection(const std::vector<RodGeometry>& rods, const BackgroundF
 
 }  // namespace
 
+double expected_near_wall_error(const std::vector<NearWallErrorRow>& record, int level, bool pore, double beta,
+                                double gap_over_d, bool& extrapolated) {
+  double nearest_beta = -1.0;
+  for (const NearWallErrorRow& r : record)
+    if (r.level == level && r.pore == pore && (nearest_beta < 0.0 || std::abs(r.beta - beta) < std::abs(nearest_beta - beta)))
+      nearest_beta = r.beta;
+  if (nearest_beta < 0.0) return 0.0;
+  std::map<double, double> by_gap;
+  for (const NearWallErrorRow& r : record)
+    if (r.level == level && r.pore == pore && r.beta == nearest_beta) by_gap[r.gap_over_d] = r.force_error;
+  const bool near = gap_over_d < 2.0 * by_gap.rbegin()->first;
+  if (near && std::abs(nearest_beta - beta) > 1e-9) extrapolated = true;
+  if (gap_over_d <= by_gap.begin()->first) {
+    extrapolated |= gap_over_d < by_gap.begin()->first;
+    return by_gap.begin()->second;
+  }
+  const auto far = *by_gap.rbegin();
+  if (gap_over_d >= far.first)  // beyond the record: falls linearly to 0 at twice its largest gap
+    return near ? far.second * (2.0 - gap_over_d / far.first) : 0.0;
+  const auto hi = by_gap.lower_bound(gap_over_d);
+  const auto lo = std::prev(hi);
+  return lo->second + (hi->second - lo->second) * (gap_over_d - lo->first) / (hi->first - lo->first);
+}
+
+SceneWallGaps scene_wall_gaps(const std::vector<RodGeometry>& rods, const ChannelGeometry& geometry) {
+  SceneWallGaps gaps;
+  gaps.wall = gaps.pore = std::numeric_limits<double>::infinity();
+  double d = 0.0;
+  for (const RodGeometry& g : rods) {
+    d = std::max(d, g.sphere_diameter);
+    for (const Eigen::Vector3d& x : g.positions) {
+      const double a = 0.5 * g.sphere_diameter;
+      const double to_walls = std::min(x.y() - geometry.y_lo(), geometry.y_hi() - x.y()) - a;
+      gaps.wall = std::min(gaps.wall, to_walls / g.sphere_diameter);
+      for (const ZCylinder& c : geometry.cylinders())
+        if (c.radius > 0.0)
+          gaps.pore = std::min(gaps.pore, (std::hypot(x.x() - c.center_x, x.y() - c.center_y) - c.radius - a) /
+                                              g.sphere_diameter);
+    }
+  }
+  if (d > 0.0 && !geometry.is_straight())  // passing the narrowest opening on its centre line
+    gaps.pore = std::min(gaps.pore, 0.5 * (geometry.narrowest_opening() - d) / d);
+  gaps.wall = std::max(gaps.wall, 0.0);
+  gaps.pore = std::max(gaps.pore, 0.0);
+  return gaps;
+}
+
 ExpectedLevelError expected_level_error(const std::vector<LevelErrorRow>& record, int level, double beta, int n) {
   std::map<double, std::map<int, ErrorTriple>> grid;  // beta -> n -> errors
   for (const LevelErrorRow& r : record)
@@ -90,7 +138,8 @@ ExpectedLevelError expected_level_error(const std::vector<LevelErrorRow>& record
 AutoModelChoice choose_auto_model(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, double beta,
                                   const HydrodynamicModel& level3, double bending_stiffness,
                                   double deflection_tolerance, double error_tolerance,
-                                  const std::vector<LevelErrorRow>& record) {
+                                  const std::vector<LevelErrorRow>& record,
+                                  const std::vector<NearWallErrorRow>& near_wall) {
   AutoModelChoice choice;
   choice.flexible = bending_stiffness > 0.0;
   if (choice.flexible) choice.estimated_deflection = missed_deflection(rods, flow, level3, bending_stiffness);
@@ -100,10 +149,20 @@ AutoModelChoice choose_auto_model(const std::vector<RodGeometry>& rods, const Ba
 
   // Expected error of every level: the worst over the rods (the longest rod
   // for the length dependence).
+  // The near-wall record adds the error at the scene's gaps to walls and pores.
   std::vector<ExpectedLevelError> errors;
+  choice.wall_gaps = scene_wall_gaps(rods, flow.geometry());
   for (int level = 1; level <= 4; ++level) {
     errors.push_back(expected_level_error(record, level, beta, longest));
-    choice.level_errors.push_back(errors.back().known && find_model_level(level) ? errors.back().total() : -1.0);
+    bool near_extrapolated = false;
+    const double near_wall_error =
+        std::max(expected_near_wall_error(near_wall, level, false, beta, choice.wall_gaps.wall, near_extrapolated),
+                 expected_near_wall_error(near_wall, level, true, beta, choice.wall_gaps.pore, near_extrapolated));
+    errors.back().extrapolated |= near_extrapolated && near_wall_error > 0.0;
+    choice.near_wall_errors.push_back(near_wall_error);
+    choice.level_errors.push_back(errors.back().known && find_model_level(level)
+                                      ? std::max(errors.back().total(), near_wall_error)
+                                      : -1.0);
   }
   auto allowed = [&](int level) { return choice.level_errors[level - 1] >= 0.0 && (!bending_matters || level >= 3); };
   int chosen = 0;
@@ -120,9 +179,20 @@ AutoModelChoice choose_auto_model(const std::vector<RodGeometry>& rods, const Ba
   choice.extrapolated = errors[chosen - 1].extrapolated;
 
   char buf[256];
-  std::snprintf(buf, sizeof buf, "beta %.3g, rods of up to %d spheres; expected error from the cross-check record:",
-                beta, longest);
+  std::snprintf(buf, sizeof buf, "beta %.3g, rods of up to %d spheres", beta, longest);
   std::string s = buf;
+  if (std::isfinite(choice.wall_gaps.wall)) {
+    std::snprintf(buf, sizeof buf, ", %.2g d from a side wall", choice.wall_gaps.wall);
+    s += buf;
+  }
+  if (std::isfinite(choice.wall_gaps.pore)) {
+    std::snprintf(buf, sizeof buf, ", %.2g d from a pore cylinder", choice.wall_gaps.pore);
+    s += buf;
+  }
+  s += "; expected error from the cross-check records (slit rows";
+  bool any_near = false;
+  for (double e : choice.near_wall_errors) any_near |= e > 0.0;
+  s += any_near ? ", near walls and pores):" : "):";
   for (int level = 1; level <= 4; ++level) {
     const char* sep = level > 1 ? "," : "";
     if (choice.level_errors[level - 1] < 0.0) std::snprintf(buf, sizeof buf, "%s level %d -", sep, level);
@@ -137,7 +207,7 @@ AutoModelChoice choose_auto_model(const std::vector<RodGeometry>& rods, const Ba
   std::snprintf(buf, sizeof buf, " -> %s (level %d), expected error %.1f %% (tolerance %.0f %%)%s%s",
                 choice.model.c_str(), chosen, 100 * choice.expected_error, 100 * error_tolerance,
                 choice.within_tolerance ? "" : ": no allowed level within the tolerance, the most accurate one",
-                choice.extrapolated ? "; scene outside the record (beta or n clamped to its range)" : "");
+                choice.extrapolated ? "; scene outside the record (beta, n or gap clamped to its range)" : "");
   choice.summary = s + buf;
   return choice;
 }

@@ -19,8 +19,23 @@
 // a fraction of the rod length L. A flexible rod whose estimate exceeds the
 // deflection tolerance is given a non-local level (3 or 4) only.
 //
-// What the record does not cover: rods near side walls or pore cylinders
-// (no resolved runs there yet), bent rods, beta and n outside the campaign.
+// Walls and pores (issue 14 item 5): a second record, the worst errors of
+// each level against the resolved rows near a side wall and beside a pore
+// cylinder (near_wall_error_record(), written by hsrod_crosscheck_scenes
+// --wall-record-cpp from calibration/data/level_error_near_walls.csv, levels
+// with their near-wall correction, hydro/wall_proximity.h), per geometry,
+// beta and surface gap. The scene's gaps: the smallest surface gap of its
+// spheres to a side wall now, and, with pore cylinders, the gap a sphere
+// keeps passing the narrowest opening on its centre line, (w_min - d) / 2,
+// or its gap to a cylinder now if smaller. A level's expected error is the
+// larger of the slit record's and the near-wall record's at these gaps
+// (linear in the gap between recorded gaps, at the nearest recorded beta;
+// clamped below the smallest gap; beyond the largest recorded gap g_f it
+// falls linearly to 0 at 2 g_f, an assumption: the record's errors fall with
+// the gap and the slit record holds far from walls).
+//
+// What the records do not cover: bent rods near walls, beta and n outside
+// the campaigns, near-wall cases at beta other than 0.15 and 0.3.
 #pragma once
 
 #include "hydro/hydrodynamic_model.h"
@@ -44,6 +59,33 @@ struct LevelErrorRow {
 const std::vector<LevelErrorRow>& level_error_record();
 const char* level_error_record_provenance();
 
+// One row of the near-wall record.
+struct NearWallErrorRow {
+  int level;            // 1-4
+  bool pore;            // beside a pore cylinder (else a side wall)
+  double beta;          // d / H [-]
+  double gap_over_d;    // smallest surface gap to the wall / cylinder [d]
+  double force_error;   // largest |model / resolved - 1| of the totals [-]
+  double profile_rms;   // largest per-sphere profile RMS error [-]
+};
+const std::vector<NearWallErrorRow>& near_wall_error_record();
+const char* near_wall_error_record_provenance();
+
+// Level `level`'s expected error of the totals at surface gap `gap_over_d`
+// from a wall (pore = false) or a pore cylinder (see above); 0 when the
+// record has no rows for it. `extrapolated` is set when beta is not a
+// recorded one or the gap is below the smallest recorded gap.
+double expected_near_wall_error(const std::vector<NearWallErrorRow>& record, int level, bool pore, double beta,
+                                double gap_over_d, bool& extrapolated);
+
+// The scene's surface gaps [d] that the near-wall record is read at: to the
+// side walls (the rods' smallest now) and to pore cylinders (see above;
+// +infinity without cylinders).
+struct SceneWallGaps {
+  double wall = 0.0, pore = 0.0;
+};
+SceneWallGaps scene_wall_gaps(const std::vector<RodGeometry>& rods, const ChannelGeometry& geometry);
+
 struct ExpectedLevelError {
   bool known = false;         // the record has rows of this level
   bool extrapolated = false;  // beta or n outside the recorded range (clamped)
@@ -62,6 +104,8 @@ struct AutoModelChoice {
   bool within_tolerance = false;       // expected_error <= the error tolerance
   bool extrapolated = false;           // the scene is outside the record for the chosen level
   std::vector<double> level_errors;    // expected error of levels 1..4 [-] (< 0: not in the record)
+  SceneWallGaps wall_gaps;             // the scene's gaps to walls and pore cylinders [d]
+  std::vector<double> near_wall_errors;  // the near-wall record's part of level_errors, levels 1..4 [-]
   std::string summary;                 // one line for the log: every level's error, the choice and why
 };
 
@@ -73,6 +117,7 @@ struct AutoModelChoice {
 AutoModelChoice choose_auto_model(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, double beta,
                                   const HydrodynamicModel& level3, double bending_stiffness,
                                   double deflection_tolerance, double error_tolerance,
-                                  const std::vector<LevelErrorRow>& record = level_error_record());
+                                  const std::vector<LevelErrorRow>& record = level_error_record(),
+                                  const std::vector<NearWallErrorRow>& near_wall = near_wall_error_record());
 
 }  // namespace hsrod

@@ -123,3 +123,85 @@ TEST(calibration_AutoErrorModel, InterpolatedRecordPredictsTheHeldOutRod) {
   }
   EXPECT_GE(rods, 1);
 }
+
+// The near-wall record (drag-models/hydro/auto_near_wall_record.cpp) is the
+// recorded file calibration/data/level_error_near_walls.csv (both written by
+// crosscheck_report.py --scenes-only from the same cross-check).
+TEST(calibration_AutoErrorModel, BuiltInNearWallRecordIsTheRecordedFile) {
+  const auto& record = hsrod::near_wall_error_record();
+  int rows = 0;
+  for (const auto& f : read_csv_rows(kData + "level_error_near_walls.csv")) {
+    if (f.at("geometry") == "bent") continue;
+    const int level = hsrod::find_model(f.at("level"))->level;
+    const bool pore = f.at("geometry") == "pore";
+    const double beta = std::stod(f.at("beta")), gap = std::stod(f.at("gap_over_d"));
+    int found = 0;
+    for (const auto& r : record)
+      if (r.level == level && r.pore == pore && std::abs(r.beta - beta) < 1e-9 && std::abs(r.gap_over_d - gap) < 1e-9) {
+        EXPECT_NEAR(r.force_error, std::stod(f.at("force_error")), 1e-3 * (1 + r.force_error));
+        EXPECT_NEAR(r.profile_rms, std::stod(f.at("profile_rms")), 1e-3 * (1 + r.profile_rms));
+        ++found;
+      }
+    EXPECT_EQ(found, 1) << f.at("level") << " " << f.at("geometry") << " beta " << beta << " gap " << gap;
+    ++rows;
+  }
+  EXPECT_EQ(rows, static_cast<int>(record.size()));
+  EXPECT_GE(rows, 4 * 6);
+}
+
+namespace {
+// A channel at rest of the wall/pore cross-check's shape (W = 6 H, pore
+// cylinders R = 1.5 H at L/2), beta 0.3.
+class RestingChannel : public hsrod::BackgroundFlow {
+ public:
+  explicit RestingChannel(hsrod::ChannelGeometry g) : g_(std::move(g)) {}
+  Eigen::Vector2d velocity(double, double) const override { return Eigen::Vector2d(1e-3, 0.0); }
+  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
+  double pressure(double, double) const override { return 0.0; }
+  double mean_velocity() const override { return 1e-3; }
+  const hsrod::ChannelGeometry& geometry() const override { return g_; }
+  std::string description() const override { return "uniform stream"; }
+
+ private:
+  hsrod::ChannelGeometry g_;
+};
+}  // namespace
+
+// auto reads the near-wall record at the scene's gaps: a rigid row of 5
+// spheres 0.5 d beside a pore cylinder at beta 0.3 (levels 2-3: 16-19 %,
+// level 4: 8 % in the record) gets level 4 with the record's error; the same
+// row in the middle of a wide channel (no wall within 2 x the record's
+// largest gap) the slit record's cheapest level within 10 %.
+TEST(calibration_AutoErrorModel, AutoUsesTheDistanceToWallsAndPores) {
+  const double d = 3e-6, H = 1e-5, R = 1.5 * H;
+  const hsrod::HydrodynamicParameters p{1e-3, H, d};
+  const auto table = hsrod::ConfinementTable::default_table();
+  const auto level3 = hsrod::make_hydrodynamic_model("nonlocal", p, table);
+  const RestingChannel pore(hsrod::ChannelGeometry(12 * H, 6 * H, H, 0.0, 0.0, {{6 * H, 0.0, R}, {6 * H, 6 * H, R}}));
+  hsrod::RodGeometry row;
+  row.sphere_diameter = d;
+  for (int i = 0; i < 5; ++i) row.positions.emplace_back(6 * H + (i - 2) * d, R + 0.5 * d + 0.5 * d + 0.01 * d, 0.5 * H);
+  // the middle sphere is 0.51 d from the cylinder's top; the row's ends sit farther (the arc falls away)
+  const auto near = hsrod::choose_auto_model({row}, pore, 0.3, *level3, 0.0, 0.01, 0.10);
+  std::printf("%s\n", near.summary.c_str());
+  EXPECT_NEAR(near.wall_gaps.pore, 0.51, 0.01);
+  EXPECT_EQ(near.model, "twoway");
+  bool extrapolated = false;
+  const double level4_record = hsrod::expected_near_wall_error(hsrod::near_wall_error_record(), 4, true, 0.3, 0.51,
+                                                               extrapolated);
+  EXPECT_FALSE(extrapolated);
+  EXPECT_NEAR(near.expected_error, level4_record, 1e-12);
+  EXPECT_LT(near.expected_error, 0.10);
+  EXPECT_GT(near.level_errors[1], 0.10);  // level 2 near the pore cylinder
+  EXPECT_GT(near.level_errors[2], 0.10);  // level 3
+  EXPECT_NE(near.summary.find("from a pore cylinder"), std::string::npos);
+
+  const RestingChannel wide(hsrod::ChannelGeometry(40 * H, 40 * H, H));
+  hsrod::RodGeometry middle = row;
+  for (auto& x : middle.positions) x += Eigen::Vector3d(14 * H, 20 * H - x.y(), 0.0);
+  const auto far = hsrod::choose_auto_model({middle}, wide, 0.3, *level3, 0.0, 0.01, 0.10);
+  std::printf("%s\n", far.summary.c_str());
+  for (double e : far.near_wall_errors) EXPECT_EQ(e, 0.0);
+  EXPECT_NE(far.model, "twoway");
+  EXPECT_LE(far.expected_error, 0.10);
+}

@@ -81,11 +81,13 @@ struct Residuals {
   const std::vector<const Prepared*>* cases;
   int m = 0;
   double fixed_ln_screening = NAN;  // NaN: fitted
+  bool friction_only = false;       // held-load parameters fixed at 0
   int inputs() const { return WallProximityLaw::kParameters; }
   int values() const { return m; }
   int operator()(const Eigen::VectorXd& x_in, Eigen::VectorXd& r) const {
     Eigen::VectorXd x = x_in;
     if (!std::isnan(fixed_ln_screening)) x[2] = fixed_ln_screening;
+    if (friction_only) x[5] = x[6] = x[8] = 0.0;
     const WallProximityLaw w = law_of(x);
     int k = 0;
     for (const Prepared* p : *cases) {
@@ -131,6 +133,8 @@ int main(int argc, char** argv) {
   app.add_option("--json", json_path, "fit report (parameters, uncertainties, residuals)")->required();
   app.add_option("--cpp", cpp_path, "built-in law (drag-models/hydro/wall_proximity_fit.cpp)")->required();
   app.add_option("--hold-out", hold_out, "cases (both loads) left out of the fit");
+  bool friction_only = false;
+  app.add_flag("--friction-only", friction_only, "held-load parameters b_n, b_t, b_q fixed at 0");
   CLI11_PARSE(app, argc, argv);
   try {
     std::set<std::string> held;
@@ -183,6 +187,7 @@ int main(int argc, char** argv) {
       res.cases = &fit_cases;
       res.m = m;
       if (level != "twoway") res.fixed_ln_screening = ln_screening_level4;
+      res.friction_only = friction_only;
       Eigen::VectorXd x(WallProximityLaw::kParameters);
       x << 0.5, 0.3, std::log(1.0), 0.5, 0.3, 0.0, 0.0, 0.0, 0.0;
       Eigen::NumericalDiff<Residuals> num(res);
@@ -192,6 +197,7 @@ int main(int argc, char** argv) {
       lm.parameters.ftol = 1e-10;
       const auto status = lm.minimize(x);
       if (!std::isnan(res.fixed_ln_screening)) x[2] = res.fixed_ln_screening;
+      if (friction_only) x[5] = x[6] = x[8] = 0.0;
       if (level == "twoway") ln_screening_level4 = x[2];
       Eigen::VectorXd r(m);
       res(x, r);
@@ -199,11 +205,14 @@ int main(int argc, char** argv) {
       num.df(x, J);
       const int dof = std::max(1, m - WallProximityLaw::kParameters);
       const double s2 = r.squaredNorm() / dof;
-      if (!std::isnan(res.fixed_ln_screening)) J.col(2).setZero();
+      std::vector<int> fixed;
+      if (!std::isnan(res.fixed_ln_screening)) fixed.push_back(2);
+      if (friction_only) fixed.insert(fixed.end(), {5, 6, 8});
+      for (int k : fixed) J.col(k).setZero();
       Eigen::MatrixXd JtJ = J.transpose() * J;
-      if (!std::isnan(res.fixed_ln_screening)) JtJ(2, 2) = 1.0;  // not fitted: no uncertainty of its own
+      for (int k : fixed) JtJ(k, k) = 1.0;  // not fitted: no uncertainty of its own
       Eigen::MatrixXd cov = s2 * JtJ.inverse();
-      if (!std::isnan(res.fixed_ln_screening)) cov(2, 2) = 0.0;
+      for (int k : fixed) cov(k, k) = 0.0;
       const WallProximityLaw w = law_of(x);
       nlohmann::json lj;
       lj["lm_status"] = static_cast<int>(status);
@@ -216,6 +225,7 @@ int main(int argc, char** argv) {
       }
       lj["parameters"]["screening"] = w.screening;
       lj["screening_from_level_4"] = level != "twoway";
+      lj["friction_only"] = friction_only;
       double held_se = 0.0;
       int held_m = 0;
       std::printf("%s: LM status %d, %d points, residual RMS %.4f\n", level.c_str(), static_cast<int>(status), m,

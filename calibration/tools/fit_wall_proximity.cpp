@@ -296,6 +296,13 @@ int main(int argc, char** argv) {
       cpp << "    c." << name << " = law(" << number(w.normal) << ", " << number(w.along) << ", " << number(w.screening)
           << ", " << number(w.normal_row_gain) << ", " << number(w.along_row_gain) << ", " << number(w.normal_held)
           << ", " << number(w.along_held) << ", " << number(w.squeeze) << ", " << number(w.squeeze_held) << ");\n";
+    // Shipped for level 4 only: levels 1-3's fits (in the report) stay 22-23 %
+    // off near walls and pores and, in the dynamic pore passages, push the
+    // rod the wrong way (calibration/validation/pore_passage/README.md; the
+    // paper's 45-degree example's drift flips sign): kept, not applied.
+    cpp << "    // levels 1-3: fitted (calibration/data/wall_proximity_fit.json) but not applied: they stay 22-23 %\n"
+           "    // off near walls and pores and push the dynamic pore passages the wrong way (pore_passage/README.md)\n"
+           "    c.local.active = false;\n    c.nonlocal.active = false;\n";
     cpp << "    c.source = \"hsrod_fit_wall_proximity on " << cases_path << " (held out: " << hold_out
         << ")\";\n    return c;\n  }();\n  return c;\n}\n\n}  // namespace hsrod\n";
     std::printf("wrote %s and %s\n", json_path.c_str(), cpp_path.c_str());

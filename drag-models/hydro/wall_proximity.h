@@ -42,6 +42,14 @@
 // different part of the wall's effect already (level 4's window reflects the
 // depth-averaged flow off the walls, levels 1-3 do not).
 //
+// Applied at level 4 only (wall_proximity_fit.cpp): its fit brings level 4's
+// totals within 8 % of every resolved wall and pore row. Levels 1-3 have
+// fitted laws (calibration/data/wall_proximity_fit.json) that are not
+// applied: they stay 22-23 % off (the channel-wide reflection of the
+// depth-averaged flow these levels lack is not a near-wall effect) and, in
+// the dynamic pore passages, push the rod the wrong way
+// (calibration/validation/pore_passage/README.md).
+//
 // Gaps below kMinimumGapOverD d are taken at that gap (the fit covers 0.5-3 d;
 // contact is the wall-contact model's job, dynamics/wall_contact.h).
 #pragma once

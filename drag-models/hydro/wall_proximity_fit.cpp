@@ -30,9 +30,9 @@ WallProximityLaw law(double normal, double along, double screening, double norma
 const WallProximityCalibration& WallProximityCalibration::built_in() {
   static const WallProximityCalibration c = [] {
     WallProximityCalibration c;
-    c.local = law(1.364681131, 2.095276306, 0.3931340469, 0.1449935729, -0.5229555429, -1.750209664, 2.370463433, -0.1645831641, 0.1786959962);
-    c.nonlocal = law(1.133324233, 1.295154427, 0.3931340469, 0.3126159695, -0.2732827769, -3.67739652, 0.831429126, -0.2296932557, 0.1916779849);
-    c.twoway = law(0.6376507395, 0.3188624561, 0.3931340469, 0.5756938394, 0.3439947355, -0.5534620432, 0.08602797887, -0.1773059042, 0.09251477175);
+    c.local = law(1.397891157, 1.985182864, 0.343442561, 0.1586419478, -0.5374957038, -2.038829754, 2.41565438, -0.1628980106, 0.1953114556);
+    c.nonlocal = law(1.168291023, 1.270708439, 0.343442561, 0.3224590894, -0.27106038, -3.925715726, 0.8645299038, -0.2304076415, 0.2083627922);
+    c.twoway = law(0.7418451113, 0.4097886113, 0.343442561, 0.4392371644, 0.2105274726, -0.6332203707, 0.1400798049, -0.1871802071, 0.1170719695);
     // levels 1-3: fitted (calibration/data/wall_proximity_fit.json) but not applied: they stay 22-23 %
     // off near walls and pores and push the dynamic pore passages the wrong way (pore_passage/README.md)
     c.local.active = false;

@@ -417,6 +417,7 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
       const double contact_floor = 0.5 * limits.max_overlap * d;  // the doubling test's limit while touching [m]
       const double quiet_move = 2e-3 * contact_floor;             // largest half-step move of a quiet step [m]
       bool halves_ready = false, quiet = false;
+      ws.first_half_result.friction_mismatch = ws.half_result.friction_mismatch = 0.0;
       StepAssessment a;
       // Newton iterations on the wall contacts (below), where the full step is taken.
       bool contact_iterated = false, contact_converged = false;
@@ -606,6 +607,21 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
           m.precision(3);
           m << "the step's truncation error is " << a.truncation_error << " of its displacement (tolerance "
             << limits.displacement_tolerance << ")";
+          a.problem = m.str();
+        }
+      }
+      // Wall friction at the step's end velocities (WallContactParameters::
+      // friction_iterations) that did not converge: the step's friction is
+      // off the law by more than the step-error limit.
+      if (a.problem.empty() && walls && walls->friction_iterations > 0) {
+        // (The half steps' figures are reset at each (sub)step's start.)
+        const double mismatch = std::max(
+            {ws.trial.friction_mismatch, ws.first_half_result.friction_mismatch, ws.half_result.friction_mismatch});
+        if (mismatch > std::max(limits.max_step_error, walls->friction_tolerance)) {
+          std::ostringstream m;
+          m.precision(3);
+          m << "wall friction at the step's end velocities did not converge in " << walls->friction_iterations
+            << " repeats (friction force off the law by " << mismatch << " of itself)";
           a.problem = m.str();
         }
       }

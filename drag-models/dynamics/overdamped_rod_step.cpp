@@ -206,7 +206,16 @@ struct SphereWallContact {
   Eigen::Vector3d force;      // [N]
   Eigen::Matrix3d stiffness;  // [N/m]
   bool rubbing;               // wall friction acts (friction below is set)
-  Matrix6d friction;          // secant resistance c G^T G about the previous velocities [N s/m, N s, N m s]
+  Matrix6d friction;          // friction resistance (secant or tangent, below) [N s/m, N s, N m s]
+  // Friction loads on the sphere besides the secant's (step()'s correction
+  // that puts friction at the end velocities) [N, N m]; zero in a plain step.
+  Vector6d friction_load;
+  // The walls touched and, where rubbing, the slip velocity each point's
+  // secant is taken about [m/s] and its coefficient c = mu F_n / max(|about|, v_s) [N s/m].
+  int points = 0;
+  std::array<WallContactPoint, 3> point;
+  std::array<Eigen::Vector3d, 3> about;
+  std::array<double, 3> secant{};
 };
 
 struct SpherePairContact {
@@ -243,6 +252,19 @@ struct OverdampedRodSolver::Workspace {
   Eigen::VectorXd rhs, dy;  // loads [N, N m], then displacements [m, rad]
   Eigen::VectorXd velocities, hydrodynamic;  // 3n work vectors for the coupled drag
   std::vector<Vector6d> previous_velocities;  // (v, omega) of the last step, where wall friction is linearised
+  // Wall friction at the step's end velocities (step()): the slip velocity
+  // of each rubbing wall-contact point (3 slots per contact, in the order
+  // find_contacts finds them) its secant is taken about [m/s] (empty: the
+  // previous velocities), and the correction loads. With the state the
+  // step starts from (restored before the repeat).
+  std::vector<Eigen::Vector3d> given_slip;
+  std::vector<Vector6d> given_load;  // per wall contact: the correction loads [N, N m]
+  std::vector<Eigen::Vector3d> point_load;  // per slot: the correction force at the point [N]
+  Eigen::VectorXd step_dy;           // the last step_once's solution dy (6n) [m, rad]
+  Eigen::MatrixXd friction_columns;  // (R/dt + K + C/dt)^-1 G_p^T e_a for each rubbing point's tangent direction
+  bool solve_kept(Eigen::VectorXd& b) const;  // b <- A^-1 b with the kept factors; false if none are kept
+  std::vector<Eigen::Vector3d> friction_start_positions;
+  std::vector<Eigen::Quaterniond> friction_start_orientations;
 
   // Block-tridiagonal storage: diagonal[k] = A(k, k), upper[k] = A(k, k+1),
   // lower[k] = A(k, k-1) (6x6 blocks).
@@ -393,15 +415,25 @@ void OverdampedRodSolver::Workspace::find_contacts(const OverdampedRod& rod, con
       result.wall_contact = true;
       result.wall_force += c.force.norm();
       if (static_cast<int>(result.sphere_wall_force.size()) == n) result.sphere_wall_force[i] += c.force.norm();
-      SphereWallContact contact{i, c.force, c.stiffness, false, Matrix6d::Zero()};
-      // Wall friction: secant resistance about the previous velocities,
-      // c G^T G (dynamics/wall_contact.h), on the sphere's own 6x6 block.
+      SphereWallContact contact{i, c.force, c.stiffness, false, Matrix6d::Zero(), Vector6d::Zero(), c.points, c.point,
+                                {},  {}};
+      // Wall friction: its secant c G^T G (dynamics/wall_contact.h) about
+      // the previous velocities (or, when step() repeats the step, about the
+      // slip it is given, with the given correction loads), on the sphere's
+      // own 6x6 block.
       if (walls->friction_coefficient > 0.0) {
         const Vector6d u0 = previous_velocity(rod, i);
         contact.rubbing = true;
-        for (int k = 0; k < c.points; ++k)
-          contact.friction += wall_friction_resistance(c.point[k], rod.radii[i], walls->friction_coefficient,
-                                                       walls->slip_velocity, u0);
+        const std::size_t m = wall_contacts.size();
+        for (int k = 0; k < c.points; ++k) {
+          const std::size_t slot = 3 * m + k;
+          contact.about[k] = slot < given_slip.size() ? given_slip[slot] : wall_slip(c.point[k], rod.radii[i], u0);
+          contact.secant[k] =
+              walls->friction_coefficient * c.point[k].normal_force / std::max(contact.about[k].norm(), walls->slip_velocity);
+          contact.friction += wall_friction_resistance_at_slip(c.point[k], rod.radii[i], walls->friction_coefficient,
+                                                               walls->slip_velocity, contact.about[k].norm());
+        }
+        if (m < given_load.size()) contact.friction_load = given_load[m];
       }
       wall_contacts.push_back(contact);
     }
@@ -507,6 +539,17 @@ void OverdampedRodSolver::Workspace::back_substitute_banded(int n) {
 // Another right-hand side through the factors solve_banded left: forward
 // elimination with the unchanged lower blocks and the kept block LUs, then
 // back substitution with upper[k] = A'(k,k)^-1 A(k,k+1).
+bool OverdampedRodSolver::Workspace::solve_kept(Eigen::VectorXd& b) const {
+  switch (kept) {
+    case Kept::banded: resolve_banded(b); return true;
+    case Kept::coupled_chain: coupled_chain.solve_in_place(b); return true;
+    case Kept::dense: dense_lu.solve_in_place(b); return true;
+    case Kept::sparse: b = lu.solve(b).eval(); return true;
+    case Kept::none: return false;
+  }
+  return false;
+}
+
 void OverdampedRodSolver::Workspace::resolve_banded(Eigen::VectorXd& b) const {
   const int n = static_cast<int>(block_lus.size());
   for (int k = 0; k < n; ++k) {
@@ -689,6 +732,210 @@ OverdampedStepResult OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag
 void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double dt, const ChannelGeometry* geometry,
                                const WallContactParameters* walls, OverdampedStepResult& result) {
   Workspace& w = *workspace_;
+  w.given_slip.clear();
+  w.given_load.clear();
+  result.friction_mismatch = 0.0;
+  result.friction_repeats = 0;
+  const bool iterate_friction = geometry && walls && walls->friction_coefficient > 0.0 && walls->friction_iterations > 0;
+  if (iterate_friction) {
+    w.friction_start_positions = rod.positions;
+    w.friction_start_orientations = rod.orientations;
+  }
+  step_once(rod, drag, dt, geometry, walls, result);
+  if (!iterate_friction) return;
+  // Backward Euler's friction is the law at the step's end velocities; the
+  // step above took each point's secant -c w about the previous slip. The
+  // step's own matrix A = R/dt + K + C/dt (kept factorised) gives how the
+  // slips w of the rubbing points answer extra contact forces g (2 tangent
+  // directions per point): w = w0 + M g, M = G A^-1 G^T / dt (the Delassus
+  // operator of the contacts, 2k x 2k, from 2k back substitutions). The
+  // friction is right where g = f(w) + c w (f the law), a small nonlinear
+  // problem solved here by Newton's method with a line search; the step is
+  // then repeated with the same secants and the loads G^T g. Only where the
+  // secant was off by more than friction_tolerance mu F_n (a contact that
+  // sticks or slides steadily is consistent at once).
+  const double mu = walls->friction_coefficient, v_s = walls->slip_velocity;
+  const auto measure_mismatch = [&]() {
+    double mismatch = 0.0;
+    for (const SphereWallContact& c : w.wall_contacts) {
+      if (!c.rubbing) continue;
+      // The velocities of the step's linear system (the finite-rotation
+      // position update changes the slip, a small difference of v and
+      // r omega for a rolling sphere, by more than v_s).
+      Vector6d u = w.step_dy.segment<6>(6 * c.sphere);
+      if (w.origin_positions) u += w.origin_offset.segment<6>(6 * c.sphere);
+      u /= dt;
+      // The correction's force at each point is spread over the sphere's
+      // points below; judge the sphere's total tangential friction.
+      Eigen::Vector3d law = Eigen::Vector3d::Zero(), applied = c.friction_load.head<3>();
+      double sliding = 0.0;
+      for (int k = 0; k < c.points; ++k) {
+        const Eigen::Vector3d slip = wall_slip(c.point[k], rod.radii[c.sphere], u);
+        law += wall_friction_force(c.point[k], mu, v_s, slip);
+        applied -= c.secant[k] * slip;
+        sliding += mu * c.point[k].normal_force;
+      }
+      if (sliding > 0.0) mismatch = std::max(mismatch, (law - applied).norm() / sliding);
+    }
+    return mismatch;
+  };
+  result.friction_mismatch = measure_mismatch();
+  const auto keep_abouts = [&w]() {
+    w.given_slip.assign(3 * w.wall_contacts.size(), Eigen::Vector3d::Zero());
+    for (std::size_t m = 0; m < w.wall_contacts.size(); ++m)
+      for (int k = 0; k < w.wall_contacts[m].points; ++k) w.given_slip[3 * m + k] = w.wall_contacts[m].about[k];
+  };
+  for (int repeat = 0; result.friction_mismatch > walls->friction_tolerance && repeat < walls->friction_iterations;
+       ++repeat) {
+    if (w.kept == Workspace::Kept::none) {
+      // Multi-sphere sections' grouped blocks keep no factors: the same
+      // step (same secants) once more by the sparse LU, which keeps them.
+      keep_abouts();
+      rod.positions = w.friction_start_positions;
+      rod.orientations = w.friction_start_orientations;
+      const LinearSolver method = w.method;
+      w.method = LinearSolver::sparse_lu;
+      step_once(rod, drag, dt, geometry, walls, result);
+      w.method = method;
+      if (w.kept == Workspace::Kept::none) break;
+    }
+    // The rubbing points and their tangent bases.
+    struct Point {
+      int contact, k, sphere;
+      Eigen::Matrix<double, 3, 6> g;
+      Eigen::Matrix<double, 3, 2> basis;
+      double sliding, secant;
+    };
+    std::vector<Point> points;
+    for (std::size_t m = 0; m < w.wall_contacts.size(); ++m) {
+      const SphereWallContact& c = w.wall_contacts[m];
+      if (!c.rubbing) continue;
+      for (int k = 0; k < c.points; ++k) {
+        const double sliding = mu * c.point[k].normal_force;
+        if (!(sliding > 0.0)) continue;
+        const Eigen::Vector3d& n = c.point[k].normal;
+        Eigen::Vector3d t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+        Eigen::Matrix<double, 3, 2> basis;
+        basis << t1, t2;
+        points.push_back({static_cast<int>(m), k, c.sphere, wall_slip_operator(c.point[k], rod.radii[c.sphere]), basis,
+                          sliding, c.secant[k]});
+      }
+    }
+    const int unknowns = 2 * static_cast<int>(points.size());
+    if (unknowns == 0) break;
+    w.friction_columns.resize(6 * rod.size(), unknowns);
+    Eigen::VectorXd column(6 * rod.size());
+    bool solved = true;
+    for (int p = 0; p < static_cast<int>(points.size()) && solved; ++p)
+      for (int a = 0; a < 2; ++a) {
+        column.setZero();
+        column.segment<6>(6 * points[p].sphere) = points[p].g.transpose() * points[p].basis.col(a);
+        solved = w.solve_kept(column);
+        w.friction_columns.col(2 * p + a) = column;
+      }
+    if (!solved) break;
+    // Slips (in each point's basis) of the step as taken, the Delassus
+    // operator M, and the correction loads g already applied [m/s, N].
+    Eigen::VectorXd w0(unknowns), g0(unknowns);
+    Eigen::MatrixXd delassus(unknowns, unknowns);
+    for (int p = 0; p < static_cast<int>(points.size()); ++p) {
+      const Point& pt = points[p];
+      const Eigen::Matrix<double, 2, 6> bg = pt.basis.transpose() * pt.g;
+      // (In a Newton iteration, iterate(), the step's velocities are over
+      // the whole step from its start: the iterate's offset plus dy.)
+      Vector6d moved = w.step_dy.segment<6>(6 * pt.sphere);
+      if (w.origin_positions) moved += w.origin_offset.segment<6>(6 * pt.sphere);
+      w0.segment<2>(2 * p) = bg * moved / dt;
+      for (int q = 0; q < unknowns; ++q)
+        delassus.block<2, 1>(2 * p, q) = bg * w.friction_columns.col(q).segment<6>(6 * pt.sphere) / dt;
+      // The correction force already applied at this point (a repeat).
+      g0.segment<2>(2 * p) = w.given_load.empty() ? Eigen::Vector2d::Zero()
+                                                  : Eigen::Vector2d(pt.basis.transpose() * w.point_load[3 * pt.contact + pt.k]);
+    }
+    // The slips v solve v = w0 + M (f(v) + c v - g0): the minimum of the
+    // convex Q(v) = 1/2 (v - w0)^T M^-1 (v - w0) - 1/2 sum c_p |v_p|^2 + g0 . v
+    // + sum Psi_p(v_p), Psi the law's potential (f = -grad Psi: F |v|^2 /
+    // (2 v_s) below v_s, F (|v| - v_s / 2) above), convex while the contacts'
+    // frictionless mobility is positive definite. Newton's method with an
+    // Armijo line search on Q converges from any start, also across the
+    // kink of the law at v_s where Newton on the equation alone stalls.
+    // (M is symmetrised: the step's matrix is symmetric up to the bonds'
+    // finite-rotation terms.)
+    Eigen::MatrixXd inverse = delassus.partialPivLu().inverse();
+    inverse = (0.5 * (inverse + inverse.transpose())).eval();
+    const auto potential = [&](const Eigen::VectorXd& x) {
+      const Eigen::VectorXd d = x - w0;
+      double q = 0.5 * d.dot(inverse * d) + g0.dot(x);
+      for (int p = 0; p < static_cast<int>(points.size()); ++p) {
+        const double speed = x.segment<2>(2 * p).norm(), F = points[p].sliding;
+        q += -0.5 * points[p].secant * speed * speed +
+             (speed <= v_s ? F * speed * speed / (2.0 * v_s) : F * (speed - 0.5 * v_s));
+      }
+      return q;
+    };
+    const auto gradient = [&](const Eigen::VectorXd& x, Eigen::VectorXd& out, Eigen::MatrixXd* hessian) {
+      out = inverse * (x - w0) + g0;
+      if (hessian) *hessian = inverse;
+      for (int p = 0; p < static_cast<int>(points.size()); ++p) {
+        const Eigen::Vector2d s = x.segment<2>(2 * p);
+        const double speed = s.norm(), F = points[p].sliding;
+        out.segment<2>(2 * p) += (F / std::max(speed, v_s) - points[p].secant) * s;
+        if (!hessian) continue;
+        Eigen::Matrix2d d = (F / std::max(speed, v_s) - points[p].secant) * Eigen::Matrix2d::Identity();
+        if (speed > v_s) d -= F / (speed * speed * speed) * s * s.transpose();
+        hessian->block<2, 2>(2 * p, 2 * p) += d;
+      }
+    };
+    double smallest_sliding = HUGE_VAL;
+    for (const Point& pt : points) smallest_sliding = std::min(smallest_sliding, pt.sliding);
+    Eigen::VectorXd v = w0, grad, trial, step;
+    Eigen::MatrixXd hessian;
+    double q = potential(v);
+    for (int newton = 0; newton < 100; ++newton) {
+      gradient(v, grad, &hessian);
+      if (grad.norm() <= 1e-3 * walls->friction_tolerance * smallest_sliding) break;
+      const Eigen::LDLT<Eigen::MatrixXd> ldlt(hessian);
+      step = ldlt.info() == Eigen::Success ? Eigen::VectorXd(ldlt.solve(-grad)) : Eigen::VectorXd(-grad);
+      if (!(step.dot(grad) < 0.0) || !step.allFinite()) step = -grad / std::max(hessian.diagonal().maxCoeff(), 1e-300);
+      double lambda = 1.0, trial_q = HUGE_VAL;
+      for (; lambda > 1e-12; lambda *= 0.5) {
+        trial = v + lambda * step;
+        trial_q = potential(trial);
+        if (trial_q <= q + 1e-4 * lambda * step.dot(grad)) break;
+      }
+      if (!(trial_q < q)) break;
+      v = trial;
+      q = trial_q;
+    }
+    Eigen::VectorXd force(unknowns);
+    for (int p = 0; p < static_cast<int>(points.size()); ++p) {
+      const Eigen::Vector2d s = v.segment<2>(2 * p);
+      force.segment<2>(2 * p) = (points[p].secant - points[p].sliding / std::max(s.norm(), v_s)) * s;
+    }
+    // The correction loads per contact point (lab frame) and per sphere.
+    w.point_load.assign(3 * w.wall_contacts.size(), Eigen::Vector3d::Zero());
+    w.given_load.assign(w.wall_contacts.size(), Vector6d::Zero());
+    keep_abouts();
+    for (int p = 0; p < static_cast<int>(points.size()); ++p) {
+      const Eigen::Vector3d load = points[p].basis * force.segment<2>(2 * p);
+      w.point_load[3 * points[p].contact + points[p].k] = load;
+      w.given_load[points[p].contact] += points[p].g.transpose() * load;
+    }
+    rod.positions = w.friction_start_positions;
+    rod.orientations = w.friction_start_orientations;
+    ++result.friction_repeats;
+    ++w.statistics.friction_repeats;
+    step_once(rod, drag, dt, geometry, walls, result);
+    result.friction_mismatch = measure_mismatch();
+  }
+  w.given_load.clear();
+  w.given_slip.clear();
+}
+
+void OverdampedRodSolver::step_once(OverdampedRod& rod, const RodDrag& drag, double dt,
+                                    const ChannelGeometry* geometry, const WallContactParameters* walls,
+                                    OverdampedStepResult& result) {
+  Workspace& w = *workspace_;
   const Clock::time_point t_start = Clock::now();
   const int n = rod.size();
   const int ndof = 6 * n;
@@ -799,6 +1046,7 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
       for (; next_wall < w.wall_contacts.size() && w.wall_contacts[next_wall].sphere == k; ++next_wall) {
         const SphereWallContact& c = w.wall_contacts[next_wall];
         rhs.segment<3>(6 * k) += c.force;
+        if (c.rubbing) rhs.segment<6>(6 * k) += c.friction_load;
         diagonal(k).block<3, 3>(0, 0) += c.stiffness;
         if (c.rubbing) diagonal(k) += c.friction / dt;
       }
@@ -821,7 +1069,10 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
         rhs.segment<6>(6 * b.j) += w.bond_loads[k].tail<6>();
       }
     }
-    for (const SphereWallContact& c : w.wall_contacts) rhs.segment<3>(6 * c.sphere) += c.force;
+    for (const SphereWallContact& c : w.wall_contacts) {
+      rhs.segment<3>(6 * c.sphere) += c.force;
+      if (c.rubbing) rhs.segment<6>(6 * c.sphere) += c.friction_load;
+    }
     for (const SpherePairContact& c : w.pair_contacts) {
       rhs.segment<3>(6 * c.i) += c.force_on_i;
       rhs.segment<3>(6 * c.j) -= c.force_on_i;
@@ -907,6 +1158,7 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
     ++w.statistics.sparse_steps;
   }
   const Eigen::VectorXd& dy = *displacement;
+  w.step_dy = dy.head(ndof);
   w.last_dy = dy.head(ndof);
   w.last_dt = dt;
 
@@ -933,7 +1185,8 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
     w.previous_velocities[i] << result.velocities[i], result.angular_velocities[i];
   }
   for (const SphereWallContact& c : w.wall_contacts)
-    if (c.rubbing) result.friction_force += (c.friction * w.previous_velocities[c.sphere]).head<3>().norm();
+    if (c.rubbing)
+      result.friction_force += (c.friction * w.previous_velocities[c.sphere] - c.friction_load).head<3>().norm();
   for (const SpherePairContact& c : w.pair_contacts) {
     if (!c.rubbing) continue;
     Vector12d u;
@@ -972,7 +1225,10 @@ bool OverdampedRodSolver::newton_correction(const OverdampedRod& rod, const RodD
   r.setZero(6 * n);
   // Friction first: find_contacts below replaces the step's contacts.
   for (const SphereWallContact& c : w.wall_contacts)
-    if (c.rubbing) r.segment<6>(6 * c.sphere).noalias() -= c.friction * dy.segment<6>(6 * c.sphere) / dt;
+    if (c.rubbing) {
+      r.segment<6>(6 * c.sphere).noalias() -= c.friction * dy.segment<6>(6 * c.sphere) / dt;
+      r.segment<6>(6 * c.sphere) += c.friction_load;
+    }
   for (const SpherePairContact& c : w.pair_contacts) {
     if (!c.rubbing) continue;
     Vector12d u;

@@ -93,6 +93,12 @@ struct OverdampedStepResult {
   double wall_force = 0.0;                        // sum of |contact force| [N]
   std::vector<double> sphere_wall_force;          // per sphere, |wall contact force| [N] (which rod of a cluster touched)
   double friction_force = 0.0;                    // sum of |wall friction force| at the new velocities [N]
+  // Wall friction at the end velocities (WallContactParameters::friction_iterations):
+  // the largest relative mismatch |s_out - s| / s left between a rubbing
+  // point's friction force and the law at the step's end velocities [-],
+  // and the repeats of the step it took.
+  double friction_mismatch = 0.0;
+  int friction_repeats = 0;
 };
 
 // Where the time of a solver's steps went (wall time, steady clock).
@@ -105,6 +111,7 @@ struct OverdampedSolverStatistics {
   long banded_steps = 0;         // steps solved block-tridiagonally (spheres or groups of spheres)
   long sparse_steps = 0;         // steps solved by the sparse LU
   long dense_steps = 0;          // steps solved by a dense LU (of the whole matrix, or of a chain's coupled translations)
+  long friction_repeats = 0;     // steps repeated to put wall friction at the end velocities (counted in steps too)
 };
 
 // A rod at rest in its layout (identity orientations), bonds from `material`.
@@ -185,6 +192,9 @@ class OverdampedRodSolver {
   void set_linear_solver(LinearSolver method);
 
  private:
+  // One linearised step (step() repeats it while it iterates wall friction).
+  void step_once(OverdampedRod& rod, const RodDrag& drag, double dt, const ChannelGeometry* geometry,
+                 const WallContactParameters* walls, OverdampedStepResult& result);
   struct Workspace;
   std::unique_ptr<Workspace> workspace_;
 };

@@ -21,18 +21,45 @@ Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& a) {
   m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
   return m;
 }
-}  // namespace
 
-Matrix6d wall_friction_resistance(const WallContactPoint& contact, double radius, double mu, double slip_velocity,
-                                  const Vector6d& previous_velocity) {
-  if (!(mu > 0.0) || !(contact.normal_force > 0.0)) return Matrix6d::Zero();
-  const Eigen::Vector3d& n = contact.normal;
+Eigen::Matrix<double, 3, 6> slip_operator(const Eigen::Vector3d& n, double radius) {
   Eigen::Matrix<double, 3, 6> g;
   g.leftCols<3>() = Eigen::Matrix3d::Identity() - n * n.transpose();
   g.rightCols<3>() = radius * cross_matrix(n);
-  const double slip = (g * previous_velocity).norm();
+  return g;
+}
+}  // namespace
+
+double wall_slip_speed(const WallContactPoint& contact, double radius, const Vector6d& velocity) {
+  return (slip_operator(contact.normal, radius) * velocity).norm();
+}
+
+Eigen::Vector3d wall_slip(const WallContactPoint& contact, double radius, const Vector6d& velocity) {
+  return slip_operator(contact.normal, radius) * velocity;
+}
+
+Eigen::Vector3d wall_friction_force(const WallContactPoint& contact, double mu, double slip_velocity,
+                                    const Eigen::Vector3d& slip) {
+  if (!(mu > 0.0) || !(contact.normal_force > 0.0)) return Eigen::Vector3d::Zero();
+  return -mu * contact.normal_force / std::max(slip.norm(), slip_velocity) * slip;
+}
+
+Eigen::Matrix<double, 3, 6> wall_slip_operator(const WallContactPoint& contact, double radius) {
+  return slip_operator(contact.normal, radius);
+}
+
+Matrix6d wall_friction_resistance_at_slip(const WallContactPoint& contact, double radius, double mu,
+                                          double slip_velocity, double slip) {
+  if (!(mu > 0.0) || !(contact.normal_force > 0.0)) return Matrix6d::Zero();
+  const Eigen::Matrix<double, 3, 6> g = slip_operator(contact.normal, radius);
   const double coefficient = mu * contact.normal_force / std::max(slip, slip_velocity);
   return coefficient * g.transpose() * g;
+}
+
+Matrix6d wall_friction_resistance(const WallContactPoint& contact, double radius, double mu, double slip_velocity,
+                                  const Vector6d& previous_velocity) {
+  return wall_friction_resistance_at_slip(contact, radius, mu, slip_velocity,
+                                          wall_slip_speed(contact, radius, previous_velocity));
 }
 
 Matrix12d sphere_friction_resistance(const WallContactPoint& contact, double ri, double rj, double mu,

@@ -32,6 +32,21 @@ struct WallContactParameters {
   double rod_friction_coefficient = 0.0;
   double friction_coefficient = 0.0;  // Coulomb wall friction mu_fr [-] (paper Table 1: 0.5); 0 = frictionless
   double slip_velocity = 1e-6;        // v_s of the regularised law [m/s]: below it friction is viscous
+  // Wall friction at the step's end velocities (backward Euler, issue 10).
+  // The step takes each rubbing point's secant about the previous step's
+  // slip; where that leaves a point's friction off the law at the step's
+  // end velocities by more than friction_tolerance mu F_n, the contacts'
+  // friction forces are solved for with the step's own factorisation (the
+  // Delassus operator of the contacts, OverdampedRodSolver::step) and the
+  // step repeated with them, up to friction_iterations times
+  // (OverdampedStepResult::friction_mismatch says what is left; the
+  // accuracy guard rejects a step left off by more than max_step_error).
+  // 0: the secant about the previous slip only, which can exceed the
+  // Coulomb bound mu F_n many times over in the step a contact starts to
+  // slide, and stops a sliding sphere over a number of steps rather than a
+  // time.
+  int friction_iterations = 30;       // [-]
+  double friction_tolerance = 1e-3;   // relative friction-force mismatch [-]
   double effective_modulus() const { return youngs_modulus / (1.0 - poisson_ratio * poisson_ratio); }
 };
 
@@ -72,6 +87,20 @@ using Vector6d = Eigen::Matrix<double, 6, 1>;
 // F_n is zero).
 Matrix6d wall_friction_resistance(const WallContactPoint& contact, double radius, double friction_coefficient,
                                   double slip_velocity, const Vector6d& previous_velocity);
+// The same secant about a given slip speed `slip` [m/s] (c = mu F_n / max(slip, v_s)).
+Matrix6d wall_friction_resistance_at_slip(const WallContactPoint& contact, double radius, double friction_coefficient,
+                                          double slip_velocity, double slip);
+// |v_t| = |G u|, the slip speed of the contact point for sphere velocity u = (v, omega) [m/s].
+double wall_slip_speed(const WallContactPoint& contact, double radius, const Vector6d& velocity);
+// v_t = G u, the slip velocity of the contact point [m/s].
+Eigen::Vector3d wall_slip(const WallContactPoint& contact, double radius, const Vector6d& velocity);
+// The law's friction force on the sphere at the contact point for a slip
+// velocity w: -mu F_n w / max(|w|, v_s) [N].
+Eigen::Vector3d wall_friction_force(const WallContactPoint& contact, double friction_coefficient,
+                                    double slip_velocity, const Eigen::Vector3d& slip);
+// G = [ (I - n n^T)  r [n]x ] (3x6): the slip velocity of the contact point
+// is G u for sphere velocity u = (v, omega); G^T f the loads of a contact force f.
+Eigen::Matrix<double, 3, 6> wall_slip_operator(const WallContactPoint& contact, double radius);
 
 // Hertz contact between two spheres of one rod (E* = E / (2 (1 - nu^2)),
 // R* = r_i r_j / (r_i + r_j)): the force on sphere i (on j: minus it) and the

@@ -49,6 +49,8 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       walls_(true),
       wall_friction_(0.0),
       slip_velocity_(1e-6),
+      friction_iterations_(hsrod::WallContactParameters().friction_iterations),
+      friction_tolerance_(hsrod::WallContactParameters().friction_tolerance),
       max_displacement_(0.25),
       guard_(true),
       substeps_(0),
@@ -200,6 +202,8 @@ void FixRodImplicit::initial_integrate(int) {
   walls.gap_bottom = hydro.gap_bottom();
   walls.friction_coefficient = wall_friction_;
   walls.slip_velocity = slip_velocity_;
+  walls.friction_iterations = friction_iterations_;
+  walls.friction_tolerance = friction_tolerance_;
   walls.rod_contact = rod_contact_;
   walls.rod_friction_coefficient = rod_contact_ ? rod_friction_ : 0.0;
 

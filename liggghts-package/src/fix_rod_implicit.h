@@ -68,6 +68,8 @@ class FixRodImplicit : public Fix {
   bool walls_;                    // contacts with the scene's walls
   double wall_friction_;          // Coulomb wall friction coefficient mu_fr [-] (0: frictionless)
   double slip_velocity_;          // regularisation: below it friction is viscous [m/s]
+  int friction_iterations_;       // repeats of a step to put wall friction at its end velocities [-]
+  double friction_tolerance_;     // their relative friction-force tolerance [-]
   double max_displacement_;       // accuracy guard: largest displacement per (sub)step [d]
   bool guard_;                    // accuracy guard on (dynamics/guarded_step.h)
   hsrod::StepGuardLimits limits_; // its limits

@@ -34,6 +34,15 @@ void FixRodImplicit::parse_keywords(int narg, char **arg) {
     } else if (strcmp(key, "slip_velocity") == 0) {
       slip_velocity_ = parse_number(error, "fix rod/implicit", key, val);
       if (!(slip_velocity_ > 0.0)) error->all(FLERR, "fix rod/implicit: slip_velocity must be > 0 m/s");
+    } else if (strcmp(key, "friction_iterations") == 0) {
+      friction_iterations_ = parse_integer(error, "fix rod/implicit", key, val);
+      if (!(friction_iterations_ >= 0 && friction_iterations_ <= 1000))
+        error->all(FLERR, "fix rod/implicit: friction_iterations must be in [0, 1000] (0: friction about the "
+                          "previous step's slip)");
+    } else if (strcmp(key, "friction_tolerance") == 0) {
+      friction_tolerance_ = parse_number(error, "fix rod/implicit", key, val);
+      if (!(friction_tolerance_ > 0.0 && friction_tolerance_ <= 1.0))
+        error->all(FLERR, "fix rod/implicit: friction_tolerance must be in (0, 1] (relative friction-force mismatch)");
     } else if (strcmp(key, "rod_contact") == 0) {
       if (strcmp(val, "hertz") != 0 && strcmp(val, "none") != 0)
         error->all(FLERR, "fix rod/implicit: rod_contact expects hertz or none");
@@ -70,10 +79,10 @@ void FixRodImplicit::parse_keywords(int narg, char **arg) {
       if (!(limits_.max_substeps >= 1 && limits_.max_substeps <= 1 << 20))
         error->all(FLERR, "fix rod/implicit: max_substeps must be in [1, 1048576]");
     } else {
-      char msg[640];
+      char msg[704];
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix rod/implicit command: unknown keyword '%s' (expected bonds, drag, walls, "
-                    "wall_friction, slip_velocity, rod_contact, rod_friction, rod_interaction, max_displacement, "
+                    "wall_friction, slip_velocity, friction_iterations, friction_tolerance, rod_contact, rod_friction, rod_interaction, max_displacement, "
                     "accuracy_guard, step_error, max_substeps, max_bond_strain, adaptive, tolerance)", key);
       error->all(FLERR, msg);
     }

@@ -111,3 +111,46 @@ TEST(WallFrictionStep, ReversingLoadAtALargeStepDoesNotChatter) {
     }
   }
 }
+
+// Backward Euler takes the friction at the step's end velocities
+// (WallContactParameters::friction_iterations). A sphere sliding at
+// (2 mu P - mu P) / zeta whose load drops to 0.9 mu P must stick within the
+// first step, however large: the law at the end velocity leaves only the
+// viscous creep below v_s. The secant about the previous step's slip alone
+// (friction_iterations 0) resists with c = mu P / v_slide = zeta and lets it
+// slide on at 0.45 mu P / zeta (8 um in a 1 ms step).
+TEST(WallFrictionStep, ASlidingSphereSticksInTheFirstLargeStepAfterTheLoadDrops) {
+  const double spin_resistance = 1e6 * zeta_r, dt = 1e-3;
+  const double creep_load = 0.9 * mu * press;
+  const double c = mu * press / 1e-6;  // stick coefficient mu P / v_s
+  const double slip = creep_load / (zeta + c + c * zeta * r * r / spin_resistance);
+  const double creep = (creep_load - c * slip) / zeta;
+  for (int iterations : {30, 0}) {
+    PressedSphere s(spin_resistance);
+    s.walls.friction_iterations = iterations;
+    s.run(2.0 * mu * press, 1e-6, 400);
+    const auto result = s.run(creep_load, dt, 1);
+    if (iterations > 0) {
+      EXPECT_NEAR(result.velocities[0].x(), creep, 1e-3 * creep);
+      EXPECT_LE(result.friction_mismatch, s.walls.friction_tolerance);
+      EXPECT_GT(result.friction_repeats, 0);
+    } else {
+      const double lagged = creep_load / (zeta + mu * press / (mu * press / zeta));
+      EXPECT_NEAR(result.velocities[0].x(), lagged, 1e-3 * lagged);
+      EXPECT_EQ(result.friction_repeats, 0);
+    }
+  }
+}
+
+// ... and a sticking sphere whose load rises to 2 mu P slides at
+// (2 mu P - mu P) / zeta from the first step (the secant about the previous
+// creep would resist with mu P / v_s and hold it nearly still).
+TEST(WallFrictionStep, AStickingSphereSlidesFromTheFirstLargeStepAfterTheLoadRises) {
+  PressedSphere s(1e6 * zeta_r);
+  s.run(0.3 * mu * press, 1e-6, 400);
+  const double load = 2.0 * mu * press;
+  const auto result = s.run(load, 1e-3, 1);
+  const double sliding = (load - mu * press) / zeta;
+  EXPECT_NEAR(result.velocities[0].x(), sliding, 2e-3 * sliding);
+  EXPECT_LE(result.friction_mismatch, s.walls.friction_tolerance);
+}

@@ -145,6 +145,40 @@ namespace {
 // The checks of a step from (x0, q0) to the rod's state `after` without the
 // residual (which is reported only): displacement, strain change and
 // absolute strain, bond load against drag load, walls.
+// A bond turned far from its rest state: the largest angle between the bond
+// vector and its rest direction in either sphere's frame, or of the spheres'
+// relative rotation against its rest value [deg]. For the refusal message
+// only: a fold that no substep resolves.
+struct BondTurn {
+  double degrees = 0.0;
+  int i = -1, j = -1;
+};
+// Beyond it the message names the fold [deg]: past 90 deg the beam bond's
+// restoring law (small rotations) no longer describes the joint, and near
+// 180 deg its rotation-vector torque flips direction.
+constexpr double kFoldedBondDegrees = 90.0;
+
+BondTurn largest_bond_turn(const std::vector<Eigen::Vector3d>& positions,
+                           const std::vector<Eigen::Quaterniond>& orientations, const std::vector<RodBond>& bonds) {
+  BondTurn worst;
+  const auto angle_between = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return std::atan2(a.cross(b).norm(), a.dot(b));
+  };
+  for (const RodBond& b : bonds) {
+    const Eigen::Vector3d bond = positions[b.j] - positions[b.i];
+    const Eigen::Vector3d rest_i = orientations[b.i] * b.rest.rest_vector_in_frame_i;
+    const Eigen::Quaterniond rest_j_frame = orientations[b.j] * b.rest.rest_relative_rotation.inverse();
+    const Eigen::Vector3d rest_j = rest_j_frame * b.rest.rest_vector_in_frame_i;
+    const Eigen::Quaterniond relative =
+        b.rest.rest_relative_rotation.inverse() * orientations[b.i].inverse() * orientations[b.j];
+    const double turn = std::max({angle_between(rest_i, bond), angle_between(rest_j, bond),
+                                  Eigen::AngleAxisd(relative.normalized()).angle()});
+    const double degrees = std::min(turn, 2.0 * 3.14159265358979323846 - turn) * 180.0 / 3.14159265358979323846;
+    if (degrees > worst.degrees) worst = {degrees, b.i, b.j};
+  }
+  return worst;
+}
+
 StepAssessment assess_step(const std::vector<Eigen::Vector3d>& x0, const OverdampedRod& after, const RodDrag& drag,
                            double dt, const ChannelGeometry* geometry, const WallContactParameters* walls,
                            const StepGuardLimits& limits) {
@@ -635,10 +669,16 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
           m.precision(3);
           m << "implicit rod step of dt = " << dt << " s refused: even substeps of " << h << " s (dt / " << level
             << ") fail the accuracy guard at t + " << done << " s: " << a.problem;
+          const BondTurn turn = largest_bond_turn(ws.substep_positions, ws.substep_orientations, rod.bonds);
           if (a.bond_strain > limits.max_bond_strain && a.displacement <= limits.max_displacement &&
               a.strain_change <= limits.max_strain_change)
             m << "; the rod itself is over-strained (the loads stretch it beyond small-strain bonds at any step: "
                  "a stiffer rod or a slower flow)";
+          else if (turn.degrees > kFoldedBondDegrees)
+            m << "; the rod is folded at the substep's start: the bond between spheres " << turn.i << " and "
+              << turn.j << " is turned " << turn.degrees << " deg against its spheres' frames (beam bonds are "
+              << "small-rotation elements; a smaller timestep does not undo the fold: a stiffer rod, a slower "
+              << "flow, or the state before the fold)";
           else
             m << "; use a smaller timestep";
           throw StepRefused(m.str());

@@ -237,6 +237,34 @@ TEST(GuardedStep, HopelessStepIsRefusedWithTheFiguresAndTheRodIsUnchanged) {
     EXPECT_THROW(guarded_rod_step(solver, rod, drag, {}, bad, nullptr, nullptr), std::invalid_argument) << bad;
 }
 
+// The same hopeless step of a rod whose end sphere has turned 180 deg
+// against its neighbour (a beam bond wound past where its restoring torque
+// flips: the soft rods refused at the pore cylinders, examples/regime-map):
+// the refusal names the fold and says a smaller timestep does not undo it.
+TEST(GuardedStep, RefusalOfAFoldedRodNamesTheFoldedBond) {
+  RodSpec spec;
+  spec.number_of_sections = 10;
+  spec.sphere_diameter = 3e-6;
+  OverdampedRod rod = make_overdamped_rod(make_rod_layout(spec), {15e6, 0.3, 3e-6, 0.0}, 3e-6);
+  rod.orientations[9] = Eigen::Quaterniond(Eigen::AngleAxisd(kPi * 179.0 / 180.0, Eigen::Vector3d::UnitZ()));
+  const auto model = make_hydrodynamic_model("local", {1e-3, 20e-6, 3e-6}, ConfinementTable::default_table());
+  const hsrod_test::UniformStream stream;
+  RodGeometry g;
+  g.sphere_diameter = 3e-6;
+  g.positions = rod.positions;
+  RodDrag drag;
+  model->evaluate(g, stream, drag);
+  OverdampedRodSolver solver;
+  try {
+    guarded_rod_step(solver, rod, drag, {}, 1e-3, nullptr, nullptr);
+    FAIL() << "expected StepRefused";
+  } catch (const StepRefused& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("the bond between spheres 8 and 9 is turned 179 deg"), std::string::npos) << m;
+    EXPECT_NE(m.find("a smaller timestep does not undo the fold"), std::string::npos) << m;
+  }
+}
+
 TEST(GuardedStep, ModerateStepsAreTakenWholeAndMatchThePlainStep) {
   // Where the plain step is accurate the guard changes nothing: the pore
   // scene's stiff rod (15 MPa) across a uniform stream at dt = 1e-5 s.

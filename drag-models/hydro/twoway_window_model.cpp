@@ -422,8 +422,10 @@ void TwoWayWindowModel::update_resistance(const RodGeometry& rod, const ChannelG
   a.diagonal().array() += 1.0 / obstruction_ - kMidplaneFactor * free_self_mobility_;
   Eigen::LLT<Eigen::MatrixXd> llt(a);
   if (llt.info() != Eigen::Success)
-    throw std::runtime_error("twoway: the rod's obstruction matrix is not positive definite "
-                             "(a sphere too close to a wall for the window grid; refine it)");
+    throw std::runtime_error("twoway: the rod's obstruction matrix is not positive definite: level 4's window "
+                             "model does not describe this rod here (seen for a sphere too close to a wall for "
+                             "the window grid, and for long rods at beta >= 0.85 at any window_cells); "
+                             "refine window_cells, or use model nonlocal (level 3) or local (level 2)");
   state.obstruction = llt.solve(Eigen::MatrixXd::Identity(2 * n, 2 * n));
   state.solved_positions = rod.positions;
   state.evaluations_since_update = 0;

@@ -184,7 +184,13 @@ void FixHeleShawDrag::check_explicit_limit() {
     std::vector<double> masses;
     for (const auto &s : rod.second) masses.push_back(s.mass);
     const hsrod::RodGeometry g = rod_geometry(*hydro_, rod.first, rod.second);
-    limit = std::min(limit, hydro_->explicit_drag_limit(g, masses));
+    try {
+      limit = std::min(limit, hydro_->explicit_drag_limit(g, masses));
+    } catch (const std::exception &e) {
+      char msg[768];
+      std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: rod %d at set-up: %s", rod.first, e.what());
+      error->all(FLERR, msg);
+    }
   }
   explicit_limit_ = limit;
   const bool first_report = !limit_reported_;

@@ -242,7 +242,14 @@ void FixRodImplicit::initial_integrate(int) {
     const hsrod::RodGeometry &geometry = scratch.geometry;
     hsrod::RodDrag &drag = scratch.drag;
     const Clock::time_point drag_start = Clock::now();
-    hydro.loads(geometry, drag);
+    try {
+      hydro.loads(geometry, drag);
+    } catch (const std::exception &e) {
+      char msg[768];
+      std::snprintf(msg, sizeof(msg), "fix rod/implicit: rod %d at step " BIGINT_FORMAT ": drag model: %s",
+                    entry.first, update->ntimestep, e.what());
+      error->all(FLERR, msg);
+    }
     cost_.drag_seconds += seconds_since(drag_start);
     cost_.sphere_steps += n;
 

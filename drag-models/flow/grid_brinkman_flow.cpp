@@ -276,7 +276,7 @@ Eigen::Matrix2d GridBrinkmanFlow::velocity_gradient(double x, double y) const {
     const double w = b.weight, dw_dphi = b.weight_slope;
     const Eigen::Vector2d uw = field_.velocity((pw.x() - geometry_.x_lo()) / h, (pw.y() - geometry_.y_lo()) / h);
     const Eigen::Matrix2d tangential = Eigen::Matrix2d::Identity() - n * n.transpose();
-    g -= w * grad_at(pw.x(), pw.y()) * tangential + (uw / h) * (dw_dphi * h) * n.transpose();
+    g -= w * grad_at(pw.x(), pw.y()) * tangential + uw * (dw_dphi * h) * n.transpose();
   }
   return (mean_velocity_ / h) * g;
 }
@@ -310,7 +310,7 @@ void GridBrinkmanFlow::velocity_and_gradient(double x, double y, Eigen::Vector2d
     field_.velocity_and_gradient((pw.x() - geometry_.x_lo()) / h, (pw.y() - geometry_.y_lo()) / h, uw, gw);
     u -= w * uw;
     const Eigen::Matrix2d tangential = Eigen::Matrix2d::Identity() - n * n.transpose();
-    g -= w * gw * tangential + (uw / h) * (dw_dphi * h) * n.transpose();
+    g -= w * gw * tangential + uw * (dw_dphi * h) * n.transpose();
   }
   u = mean_velocity_ * u;
   g = (mean_velocity_ / h) * g;

@@ -137,6 +137,40 @@ TEST_F(GridBrinkmanPore, GradientIsTheDerivativeOfTheInterpolant) {
   }
 }
 
+TEST_F(GridBrinkmanPore, GradientInTheNoSlipBandIsTheDerivativeOfTheVelocity) {
+  // Within the no-slip band (1.5 cells) of a wall the velocity is the
+  // interpolant minus its smoothstep-weighted wall value; its gradient must
+  // be that velocity's derivative. The derivative of the weight, w'(phi) n,
+  // was taken per metre where the rest is per unit H: 1/H = 5e4 times too
+  // large, a mid-plane spin of 1e6-1e7 1/s instead of ~1e4 that spun a soft
+  // rod's end sphere half a turn against its bond at the pore cylinders
+  // (issue 10). At the upstream face of the upper cylinder, where that
+  // happened, and along its normal: central differences of velocity() with
+  // a 10 nm step (the field varies over H/sqrt(12) = 5.8 um).
+  const Eigen::Vector2d centre(scene_->x_pore, 200 * um), spot(264.4 * um, 120.534 * um);
+  const Eigen::Vector2d n = (spot - centre).normalized();
+  const double radius = (spot - centre).norm() - 2.08 * um;
+  for (double phi : {2.7 * um, 2.08 * um, 1.5 * um, 0.8 * um}) {
+    const Eigen::Vector2d p = centre + (radius + phi) * n;
+    const double d = 10e-9;
+    Eigen::Matrix2d fd;
+    fd.col(0) = (flow_->velocity(p.x() + d, p.y()) - flow_->velocity(p.x() - d, p.y())) / (2 * d);
+    fd.col(1) = (flow_->velocity(p.x(), p.y() + d) - flow_->velocity(p.x(), p.y() - d)) / (2 * d);
+    const Eigen::Matrix2d g = flow_->velocity_gradient(p.x(), p.y());
+    std::printf("phi %.2f um: |grad u| %.4g 1/s, spin %.4g 1/s; differences: %.4g, %.4g\n", phi / um, g.norm(),
+                0.5 * (g(1, 0) - g(0, 1)), fd.norm(), 0.5 * (fd(1, 0) - fd(0, 1)));
+    // Fixed: the two agree in magnitude (they differed 100-700x): |grad u|
+    // within 15 % and the u_y row to 1e-3. Left: the u_x row differs by up
+    // to 0.84 |grad u| at 0.8 um (by (1, -1) times a constant), so the spin
+    // is within 2 |grad u| only: the interpolant's gradient at the wall foot
+    // is not the derivative of its values along the wall there (open,
+    // issue 10).
+    EXPECT_NEAR(g.norm(), fd.norm(), 0.15 * fd.norm()) << phi / um;
+    EXPECT_LT((g.row(1) - fd.row(1)).norm(), 1e-3 * fd.row(1).norm()) << phi / um;
+    EXPECT_LT(std::abs(0.5 * (g(1, 0) - g(0, 1)) - 0.5 * (fd(1, 0) - fd(0, 1))), 2.0 * fd.norm()) << phi / um;
+  }
+}
+
 TEST(GridBrinkmanPoreInertia, PicardConvergesAndKeepsConservationAndSymmetry) {
   // Gap-averaged inertia (6/5) rho (u.grad)u at Re = 2 on a 3 um grid (speed).
   const test::PaperPoreScene s = test::load_paper_pore_scene();

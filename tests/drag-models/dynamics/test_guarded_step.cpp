@@ -207,13 +207,15 @@ TEST(GuardedStep, StiffSphereReachingAWallInTheStepStopsAtTheBackwardEulerContac
   EXPECT_GT(report.contact_iterations, 0);
 }
 
-TEST(GuardedStep, HopelessStepIsRefusedWithTheFiguresAndTheRodIsUnchanged) {
-  // dt = 1e-3 s in a 1 m/s stream: ~500 diameters per step; even 1024
-  // substeps move 0.5 d each: refused, naming dt and the displacement.
+// A straight 10-sphere rod (15 MPa, 3 um spheres) and its level-2 drag in a
+// 1 m/s stream (hopeless steps: ~500 diameters per ms).
+OverdampedRod ten_sphere_rod() {
   RodSpec spec;
   spec.number_of_sections = 10;
   spec.sphere_diameter = 3e-6;
-  OverdampedRod rod = make_overdamped_rod(make_rod_layout(spec), {15e6, 0.3, 3e-6, 0.0}, 3e-6);
+  return make_overdamped_rod(make_rod_layout(spec), {15e6, 0.3, 3e-6, 0.0}, 3e-6);
+}
+RodDrag drag_in_a_fast_stream(const OverdampedRod& rod) {
   const auto model = make_hydrodynamic_model("local", {1e-3, 20e-6, 3e-6}, ConfinementTable::default_table());
   const hsrod_test::UniformStream stream;
   RodGeometry g;
@@ -221,6 +223,14 @@ TEST(GuardedStep, HopelessStepIsRefusedWithTheFiguresAndTheRodIsUnchanged) {
   g.positions = rod.positions;
   RodDrag drag;
   model->evaluate(g, stream, drag);
+  return drag;
+}
+
+TEST(GuardedStep, HopelessStepIsRefusedWithTheFiguresAndTheRodIsUnchanged) {
+  // dt = 1e-3 s in a 1 m/s stream: ~500 diameters per step; even 1024
+  // substeps move 0.5 d each: refused, naming dt and the displacement.
+  OverdampedRod rod = ten_sphere_rod();
+  const RodDrag drag = drag_in_a_fast_stream(rod);
   const std::vector<Eigen::Vector3d> before = rod.positions;
   OverdampedRodSolver solver;
   try {
@@ -242,18 +252,9 @@ TEST(GuardedStep, HopelessStepIsRefusedWithTheFiguresAndTheRodIsUnchanged) {
 // flips: the soft rods refused at the pore cylinders, examples/regime-map):
 // the refusal names the fold and says a smaller timestep does not undo it.
 TEST(GuardedStep, RefusalOfAFoldedRodNamesTheFoldedBond) {
-  RodSpec spec;
-  spec.number_of_sections = 10;
-  spec.sphere_diameter = 3e-6;
-  OverdampedRod rod = make_overdamped_rod(make_rod_layout(spec), {15e6, 0.3, 3e-6, 0.0}, 3e-6);
+  OverdampedRod rod = ten_sphere_rod();
   rod.orientations[9] = Eigen::Quaterniond(Eigen::AngleAxisd(kPi * 179.0 / 180.0, Eigen::Vector3d::UnitZ()));
-  const auto model = make_hydrodynamic_model("local", {1e-3, 20e-6, 3e-6}, ConfinementTable::default_table());
-  const hsrod_test::UniformStream stream;
-  RodGeometry g;
-  g.sphere_diameter = 3e-6;
-  g.positions = rod.positions;
-  RodDrag drag;
-  model->evaluate(g, stream, drag);
+  const RodDrag drag = drag_in_a_fast_stream(rod);
   OverdampedRodSolver solver;
   try {
     guarded_rod_step(solver, rod, drag, {}, 1e-3, nullptr, nullptr);

@@ -47,6 +47,21 @@ std::vector<double> graded_axis(double first, int fine, double h, double below, 
   for (double offset : upper) faces.push_back(last + offset);
   return faces;
 }
+
+// Mean self-mobility of a footprint on a free lattice table of cells h [m]
+// over sub-cell places and the two in-plane directions [m/(N s)].
+double mean_lattice_self_mobility(const LatticeGreenTable& table, double h) {
+  double sum = 0.0;
+  int samples = 0;
+  for (double ox : {0.0, 0.125, 0.25, 0.375, 0.5})
+    for (double oy : {0.0, 0.125, 0.25, 0.375, 0.5}) {
+      const LatticeFootprint f = table.footprint(Eigen::Vector3d(ox * h, oy * h, 0.0), Eigen::Vector2d::Zero());
+      const Eigen::Matrix2d m = table.pair(f, f);
+      sum += m(0, 0) + m(1, 1);
+      samples += 2;
+    }
+  return sum / samples;
+}
 }  // namespace
 
 TwoWayWindowModel::TwoWayWindowModel(const HydrodynamicParameters& p, const ConfinementTable& table,
@@ -76,6 +91,7 @@ TwoWayWindowModel::TwoWayWindowModel(const HydrodynamicParameters& p, const Conf
     near_reach_ = kNearReach * d;
     fine_table_ = free_lattice_table(spacing_, kernel_width());
     window_table_ = free_lattice_table(window_spacing_, window_kernel_width());
+    fine_self_mobility_ = mean_lattice_self_mobility(*fine_table_, spacing_);
   }
   obstruction_ = LocalDragBase::obstruction_friction();
   film_friction_ = sphere_friction_ - obstruction_;
@@ -393,9 +409,16 @@ Eigen::MatrixXd TwoWayWindowModel::footprint_mobility(const RodGeometry& rod, co
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) {
         const double weight = near_weight((rod.positions[i] - rod.positions[j]).head<2>().norm());
-        if (weight > 0.0)
-          mobility.block<2, 2>(2 * i, 2 * j) +=
-              weight * (fine_table_->pair(fine[i], fine[j]) - window_table_->pair(coarse[i], coarse[j]));
+        if (weight <= 0.0) continue;
+        // A footprint's own fine-lattice mobility varies by a fraction of
+        // a percent with its place between the nodes; a rod's spheres sit at
+        // different places, so that noise would make the two ends of a short
+        // rod unequal and turn it (a 2-sphere rod ~3 deg over 200 um of
+        // travel while its resistance was kept between updates): the self
+        // term takes its mean over sub-cell places instead.
+        const Eigen::Matrix2d fine_pair = i == j ? Eigen::Matrix2d(fine_self_mobility_ * Eigen::Matrix2d::Identity())
+                                                 : fine_table_->pair(fine[i], fine[j]);
+        mobility.block<2, 2>(2 * i, 2 * j) += weight * (fine_pair - window_table_->pair(coarse[i], coarse[j]));
       }
   }
   for (int i = 0; i < n; ++i)

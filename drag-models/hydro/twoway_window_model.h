@@ -259,6 +259,7 @@ class TwoWayWindowModel : public LocalDragBase {
   double film_friction_;       // zeta_f [N s/m]
   double obstruction_;         // zeta_o [N s/m]
   double free_self_mobility_;  // m_free [m/(N s)]
+  double fine_self_mobility_ = 0.0;  // two scales: a footprint's own fine-lattice mobility, mean over sub-cell places [m/(N s)]
 };
 
 // Level 4 with a state of its own, for a caller that holds one model and

@@ -13,9 +13,12 @@ Usage:  stress_matrix.py HSROD [--short] [--out RESULTS.md] [--jobs N] [--progre
 --short is the ctest subset (label `stress`, < 2 min); the default is the
 full matrix. Exit code 1 if any case failed. --progress appends each case's
 line to FILE as it finishes and skips the cases FILE already holds (a long
-run can be read while it goes and resumed after an interruption).
+run can be read while it goes and resumed after an interruption); a later
+line of a case replaces an earlier one. --rerun REGEX re-runs the matching
+cases unless FILE holds them from this very binary (e.g. after a fix).
 """
 import argparse
+import hashlib
 import concurrent.futures
 import itertools
 import math
@@ -282,16 +285,24 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--timeout", type=float, default=120.0)
     ap.add_argument("--progress")
+    ap.add_argument("--rerun", metavar="REGEX",
+                    help="cases whose name matches count as done only if recorded with this very binary "
+                         "(its sha256 in the progress line): re-runs them after a fix, resumably")
     a = ap.parse_args()
     a.hsrod = os.path.abspath(a.hsrod)
+    with open(a.hsrod, "rb") as f:
+        binary = "bin " + hashlib.sha256(f.read()).hexdigest()[:12]
     cases = matrix(a.short)
     done = {}
     if a.progress and os.path.exists(a.progress):
         with open(a.progress) as f:
             for line in f:
                 cells = [c.strip() for c in line.strip().strip("|").split("|")]
-                if len(cells) == 3:
-                    done[cells[0]] = tuple(cells)
+                if len(cells) not in (3, 4):
+                    continue
+                if a.rerun and re.search(a.rerun, cells[0]) and (len(cells) < 4 or cells[3] != binary):
+                    continue
+                done[cells[0]] = tuple(cells[:3])
     lock = threading.Lock()
 
     def run(case):
@@ -300,7 +311,7 @@ def main():
         result = check(a.hsrod, case[0], case[1], a.timeout)
         if a.progress:
             with lock, open(a.progress, "a") as f:
-                f.write(f"| {result[0]} | {result[1]} | {result[2]} |\n")
+                f.write(f"| {result[0]} | {result[1]} | {result[2]} | {binary} |\n")
         return result
 
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:

@@ -129,13 +129,13 @@ TEST(calibration_CalibratedLevels, Level2DriftAnisotropyAsResolved) {
 }
 
 // beta 0.05, below the fitted range (0.1-0.75; issue 14's range starts at
-// 0.05): the resolved rows of calibration/campaign/beta005 (mesh d/h = 6
-// only, lateral faces 2 H: calibration/data/resolved_beta005_series.csv)
-// against levels 2-4 with the shipped table and near field, extrapolated:
-// totals within 10 %, free velocities within 3 %, r within 1 % (session 9,
-// N = 10: level 2 totals +2.7..+3.3 %, level 3 -0.9..-1.6 %, level 4
-// -1.4..-2.0 %, velocities <= 0.28 %; N = 2: level 2 across -3.5 %, levels 3-4
-// -1.8..-2.5 %, velocities <= 0.39 %; the mesh-6 loads are ~0.5-1 % high).
+// 0.05): the resolved rows of calibration/campaign/beta005 (meshes d/h = 6
+// and 8, values on 8; lateral faces 2 H: calibration/data/
+// resolved_beta005_series.csv) against levels 2-4 with the shipped table and
+// near field, extrapolated: totals within 10 %, free velocities within 3 %,
+// r within 1 % (session 11, mesh 8: level 2 totals -3.1..+3.2 %, level 3
+// -1.8..-0.4 %, level 4 -2.1..-0.8 %, velocities <= 0.23 %, r - 1 within
+// 1.5e-3; the mesh-8 loads are 0.2-1.1 % below mesh 6's).
 TEST(calibration_CalibratedLevels, LevelsTwoToFourAtBeta005AsResolved) {
   const auto rows = read_resolved_series(std::string(HSROD_TEST_DATA_DIR) +
                                          "/../../calibration/data/resolved_beta005_series.csv");

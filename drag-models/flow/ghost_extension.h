@@ -11,7 +11,7 @@
 // cell to the wall (keeps the extrapolation well conditioned), linear when
 // only one fluid node exists. Several lines are averaged with weights
 // 1/(0.1 + distance beyond the wall in cells)^2. Nodes no line reaches stay
-// NaN (the interpolation then falls back to bilinear).
+// NaN (the interpolation counts them as 0, the wall's velocity).
 #pragma once
 
 #include "flow/brinkman_grid_solver.h"

@@ -7,8 +7,9 @@
 // staggered component, over a 4 x 4 node stencil that includes ghost nodes.
 // It reproduces quadratics, so the interpolation error is O(h^3) and the
 // field is C1 (continuous velocity gradient, the exact derivative of the
-// interpolant). Where a stencil touches a node that no ghost line reaches
-// (sharp corners only) the 2 x 2 bilinear interpolant is used instead.
+// interpolant). A node that no ghost line reaches (deep in a wall, e.g. the
+// diagonal of a curved wall's stencil) counts as 0, so one interpolant
+// holds everywhere and the field stays continuous from cell to cell.
 // No-slip: the ghost values make the interpolant vanish on walls to O(h^3).
 // Pressure: bilinear on cell centres (a diagnostic).
 #pragma once

@@ -159,16 +159,44 @@ TEST_F(GridBrinkmanPore, GradientInTheNoSlipBandIsTheDerivativeOfTheVelocity) {
     const Eigen::Matrix2d g = flow_->velocity_gradient(p.x(), p.y());
     std::printf("phi %.2f um: |grad u| %.4g 1/s, spin %.4g 1/s; differences: %.4g, %.4g\n", phi / um, g.norm(),
                 0.5 * (g(1, 0) - g(0, 1)), fd.norm(), 0.5 * (fd(1, 0) - fd(0, 1)));
-    // Fixed: the two agree in magnitude (they differed 100-700x): |grad u|
-    // within 15 % and the u_y row to 1e-3. Left: the u_x row differs by up
-    // to 0.84 |grad u| at 0.8 um (by (1, -1) times a constant), so the spin
-    // is within 2 |grad u| only: the interpolant's gradient at the wall foot
-    // is not the derivative of its values along the wall there (open,
-    // issue 10).
-    EXPECT_NEAR(g.norm(), fd.norm(), 0.15 * fd.norm()) << phi / um;
-    EXPECT_LT((g.row(1) - fd.row(1)).norm(), 1e-3 * fd.row(1).norm()) << phi / um;
-    EXPECT_LT(std::abs(0.5 * (g(1, 0) - g(0, 1)) - 0.5 * (fd(1, 0) - fd(0, 1))), 2.0 * fd.norm()) << phi / um;
+    // Fixed twice: the two differed 100-700x (the weight's derivative per
+    // metre); then the u_x row by up to 0.84 |grad u| at 0.8 um, because the
+    // interpolant switched to a bilinear fallback from one cell to the next
+    // along the wall (jumps of 0.02-0.03 U in the wall value at this spot).
+    // Now one interpolant: only the wall's curvature, neglected in the
+    // derivative of the wall value (phi / R < 3 % of that term), separates
+    // them (measured <= 1e-3 |grad u|).
+    std::printf("  relative difference %.2g\n", (g - fd).norm() / fd.norm());
+    EXPECT_LT((g - fd).norm(), 0.01 * fd.norm()) << phi / um;
   }
+}
+
+TEST_F(GridBrinkmanPore, VelocityIsContinuousAlongThePoreWall) {
+  // Within a wall's no-slip band the velocity subtracts the interpolant's
+  // wall value; where the interpolant switched between its cubic and a
+  // bilinear fallback from one cell to the next, that value jumped by
+  // 0.02-0.03 U along the cylinder (a trap for a sphere rolling along it).
+  // Along 10 um of arc, 0.3 um from the upper cylinder at the spot of the
+  // test above, in 5 nm steps: no step changes the velocity by more than the
+  // largest gradient times the step (twice, for the gradient's own change).
+  const Eigen::Vector2d centre(scene_->x_pore, 200 * um), spot(264.4 * um, 120.534 * um);
+  const double radius = scene_->pore_radius + 0.3 * um, step = 5e-9;
+  const double a0 = std::atan2(spot.y() - centre.y(), spot.x() - centre.x());
+  auto at = [&](int k) {
+    const double a = a0 + (k * step - 5 * um) / radius;
+    return Eigen::Vector2d(centre.x() + radius * std::cos(a), centre.y() + radius * std::sin(a));
+  };
+  double largest_step = 0.0, largest_gradient = 0.0;
+  Eigen::Vector2d previous = flow_->velocity(at(0).x(), at(0).y());
+  for (int k = 1; k <= 2000; ++k) {
+    const Eigen::Vector2d p = at(k), u = flow_->velocity(p.x(), p.y());
+    largest_step = std::max(largest_step, (u - previous).norm());
+    largest_gradient = std::max(largest_gradient, flow_->velocity_gradient(p.x(), p.y()).norm());
+    previous = u;
+  }
+  std::printf("  largest change per 5 nm step %.3g m/s; largest |grad u| x step %.3g m/s\n", largest_step,
+              largest_gradient * step);
+  EXPECT_LT(largest_step, 2.0 * largest_gradient * step);
 }
 
 TEST(GridBrinkmanPoreInertia, PicardConvergesAndKeepsConservationAndSymmetry) {

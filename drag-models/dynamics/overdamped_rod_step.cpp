@@ -1,4 +1,5 @@
 #include "dynamics/overdamped_rod_step.h"
+#include "dynamics/contact_friction_problem.h"
 
 #include "dynamics/coupled_chain_solve.h"
 #include "common/dense_lu.h"
@@ -749,8 +750,8 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
   // slips w of the rubbing points answer extra contact forces g (2 tangent
   // directions per point): w = w0 + M g, M = G A^-1 G^T / dt (the Delassus
   // operator of the contacts, 2k x 2k, from 2k back substitutions). The
-  // friction is right where g = f(w) + c w (f the law), a small nonlinear
-  // problem solved here by Newton's method with a line search; the step is
+  // friction is right where g = f(w) + c w (f the law), a small convex
+  // problem (contact_friction_problem.h); the step is
   // then repeated with the same secants and the loads G^T g. Only where the
   // secant was off by more than friction_tolerance mu F_n (a contact that
   // sticks or slides steadily is consistent at once).
@@ -852,66 +853,16 @@ void OverdampedRodSolver::step(OverdampedRod& rod, const RodDrag& drag, double d
       g0.segment<2>(2 * p) = w.given_load.empty() ? Eigen::Vector2d::Zero()
                                                   : Eigen::Vector2d(pt.basis.transpose() * w.point_load[3 * pt.contact + pt.k]);
     }
-    // The slips v solve v = w0 + M (f(v) + c v - g0): the minimum of the
-    // convex Q(v) = 1/2 (v - w0)^T M^-1 (v - w0) - 1/2 sum c_p |v_p|^2 + g0 . v
-    // + sum Psi_p(v_p), Psi the law's potential (f = -grad Psi: F |v|^2 /
-    // (2 v_s) below v_s, F (|v| - v_s / 2) above), convex while the contacts'
-    // frictionless mobility is positive definite. Newton's method with an
-    // Armijo line search on Q converges from any start, also across the
-    // kink of the law at v_s where Newton on the equation alone stalls.
-    // (M is symmetrised: the step's matrix is symmetric up to the bonds'
-    // finite-rotation terms.)
-    Eigen::MatrixXd inverse = delassus.partialPivLu().inverse();
-    inverse = (0.5 * (inverse + inverse.transpose())).eval();
-    const auto potential = [&](const Eigen::VectorXd& x) {
-      const Eigen::VectorXd d = x - w0;
-      double q = 0.5 * d.dot(inverse * d) + g0.dot(x);
-      for (int p = 0; p < static_cast<int>(points.size()); ++p) {
-        const double speed = x.segment<2>(2 * p).norm(), F = points[p].sliding;
-        q += -0.5 * points[p].secant * speed * speed +
-             (speed <= v_s ? F * speed * speed / (2.0 * v_s) : F * (speed - 0.5 * v_s));
-      }
-      return q;
-    };
-    const auto gradient = [&](const Eigen::VectorXd& x, Eigen::VectorXd& out, Eigen::MatrixXd* hessian) {
-      out = inverse * (x - w0) + g0;
-      if (hessian) *hessian = inverse;
-      for (int p = 0; p < static_cast<int>(points.size()); ++p) {
-        const Eigen::Vector2d s = x.segment<2>(2 * p);
-        const double speed = s.norm(), F = points[p].sliding;
-        out.segment<2>(2 * p) += (F / std::max(speed, v_s) - points[p].secant) * s;
-        if (!hessian) continue;
-        Eigen::Matrix2d d = (F / std::max(speed, v_s) - points[p].secant) * Eigen::Matrix2d::Identity();
-        if (speed > v_s) d -= F / (speed * speed * speed) * s * s.transpose();
-        hessian->block<2, 2>(2 * p, 2 * p) += d;
-      }
-    };
+    // The friction forces at the step's end slips (contact_friction_problem.h).
+    std::vector<FrictionPointLaw> laws;
+    laws.reserve(points.size());
     double smallest_sliding = HUGE_VAL;
-    for (const Point& pt : points) smallest_sliding = std::min(smallest_sliding, pt.sliding);
-    Eigen::VectorXd v = w0, grad, trial, step;
-    Eigen::MatrixXd hessian;
-    double q = potential(v);
-    for (int newton = 0; newton < 100; ++newton) {
-      gradient(v, grad, &hessian);
-      if (grad.norm() <= 1e-3 * walls->friction_tolerance * smallest_sliding) break;
-      const Eigen::LDLT<Eigen::MatrixXd> ldlt(hessian);
-      step = ldlt.info() == Eigen::Success ? Eigen::VectorXd(ldlt.solve(-grad)) : Eigen::VectorXd(-grad);
-      if (!(step.dot(grad) < 0.0) || !step.allFinite()) step = -grad / std::max(hessian.diagonal().maxCoeff(), 1e-300);
-      double lambda = 1.0, trial_q = HUGE_VAL;
-      for (; lambda > 1e-12; lambda *= 0.5) {
-        trial = v + lambda * step;
-        trial_q = potential(trial);
-        if (trial_q <= q + 1e-4 * lambda * step.dot(grad)) break;
-      }
-      if (!(trial_q < q)) break;
-      v = trial;
-      q = trial_q;
+    for (const Point& pt : points) {
+      laws.push_back({pt.sliding, pt.secant});
+      smallest_sliding = std::min(smallest_sliding, pt.sliding);
     }
-    Eigen::VectorXd force(unknowns);
-    for (int p = 0; p < static_cast<int>(points.size()); ++p) {
-      const Eigen::Vector2d s = v.segment<2>(2 * p);
-      force.segment<2>(2 * p) = (points[p].secant - points[p].sliding / std::max(s.norm(), v_s)) * s;
-    }
+    const Eigen::VectorXd force = contact_friction_correction(
+        delassus, w0, g0, laws, v_s, 1e-3 * walls->friction_tolerance * smallest_sliding);
     // The correction loads per contact point (lab frame) and per sphere.
     w.point_load.assign(3 * w.wall_contacts.size(), Eigen::Vector3d::Zero());
     w.given_load.assign(w.wall_contacts.size(), Vector6d::Zero());

@@ -10,7 +10,9 @@
 #   fig10b: aspect ratio 5 (2x2 spheres per section, d_rod = 6 um, H = 40 um),
 #           E 15 kPa - 15 MPa (7 values, 2 per decade) x L_rod/d_pore 1 - 5 (step 1)   [coarse: see README]
 #   fig11b: aspect ratio 5, E = 15 MPa, alpha 0 - 45 deg (step 15) x L_rod/d_pore 2 - 4 (step 1)   [coarse]
-# Usage: bash run_maps.sh [fig10a fig11a fig10b fig11b]   (default: all four)
+#   fig10b_full, fig11b_full: the aspect-ratio-5 maps on fig10a's / fig11a's 13 x 9 grid
+#           (with fig10a and fig11a: the full 468-case grid)
+# Usage: bash run_maps.sh [fig10a fig11a fig10b fig11b fig10b_full fig11b_full]   (default: the first four)
 # Environment: WORKERS (default 2; the farm runs WORKERS + 1 MPI ranks),
 # MODEL (drag model, default local = level 2), BUILD (default ../../build),
 # CASE_TIMEOUT (seconds of wall time per case, default 0 = none),
@@ -70,6 +72,12 @@ for map in "${maps[@]}"; do
             plot fig10b E "Fig. 10b: aspect ratio 5, alpha = 0 (hsrod, $model)" --logx --xlabel "E [Pa]" ;;
     fig11b) run fig11b --var section 2 --var E 15e6 --var alpha 0:45:15 --var ratio 2:4:1
             plot fig11b alpha "Fig. 11b: aspect ratio 5, E = 15 MPa (hsrod, $model)" --xlabel "initial angle alpha [deg]" ;;
-    *) echo "run_maps.sh: unknown map '$map' (fig10a, fig11a, fig10b, fig11b)" >&2; exit 1 ;;
+    # The aspect-ratio-5 maps on the full 13 x 9 grid of fig10a / fig11a
+    # (with fig10a and fig11a: the 468-case grid of issue 11's benchmark).
+    fig10b_full) run fig10b_full --var section 2 --var alpha 0 --var E "$E13" --var ratio 1:5:0.5
+            plot fig10b_full E "Fig. 10b: aspect ratio 5, alpha = 0 (hsrod, $model)" --logx --xlabel "E [Pa]" ;;
+    fig11b_full) run fig11b_full --var section 2 --var E 15e6 --var alpha 0:90:7.5 --var ratio 1:5:0.5
+            plot fig11b_full alpha "Fig. 11b: aspect ratio 5, E = 15 MPa (hsrod, $model)" --xlabel "initial angle alpha [deg]" ;;
+    *) echo "run_maps.sh: unknown map '$map' (fig10a, fig11a, fig10b, fig11b, fig10b_full, fig11b_full)" >&2; exit 1 ;;
   esac
 done

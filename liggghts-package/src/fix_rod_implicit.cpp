@@ -58,6 +58,7 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       substeps_taken_(0),
       trials_rejected_(0),
       unresolved_warned_(false),
+      substeps_warned_(false),
       bond_strain_(0.0),
       bond_energy_(0.0),
       largest_displacement_(0.0),

@@ -78,6 +78,10 @@ class FixRodImplicit : public Fix {
   long substeps_taken_;           // run total of substeps (all rods)
   long trials_rejected_;          // run total of rejected trial substeps (all rods)
   bool unresolved_warned_;
+  bool substeps_warned_;          // a fixed step needed kManySubsteps or more substeps (said once)
+  // A fixed step (adaptive no) cut into this many substeps or more by the
+  // accuracy guard is far above what the motion allows there: warned.
+  static constexpr int kManySubsteps = 64;
   double bond_strain_;            // last step, largest |axial strain| [-]
   double bond_energy_;            // last step, elastic energy of all rods' bonds [J]
   double largest_displacement_;   // last step, max |dx| / d [-]

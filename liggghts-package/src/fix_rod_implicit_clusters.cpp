@@ -224,6 +224,21 @@ void FixRodImplicit::account_guard_report(const std::string &who, const hsrod::G
     error->warning(FLERR, msg);
     unresolved_warned_ = true;
   }
+  if (!limits_.adaptive && report.substeps >= kManySubsteps && !substeps_warned_ && comm->me == 0) {
+    // Each substep met the guard's limits, but backward Euler damps motion
+    // that grows: a rod leaving an unstable state (pinned at a cylinder,
+    // then sliding off) leaves it late at such a step (doc page; stress
+    // matrix, session 11: 15 deg behind at 250x the default step).
+    char msg[640];
+    std::snprintf(msg, sizeof(msg),
+                  "fix rod/implicit: %s at step " BIGINT_FORMAT ": the accuracy guard cut the step of dt = %g s "
+                  "into %d substeps: the timestep is far above what the motion allows here, and a fixed step "
+                  "this large can lag fast motion the guard does not see (a rod released from a pinned state); "
+                  "check against a smaller timestep, or use adaptive yes tolerance 1e-3 (said once)",
+                  who.c_str(), update->ntimestep, update->dt, report.substeps);
+    error->warning(FLERR, msg);
+    substeps_warned_ = true;
+  }
   unresolved_ += report.unresolved_substeps;
   substeps_taken_ += report.substeps;
   trials_rejected_ += report.rejected_trials;

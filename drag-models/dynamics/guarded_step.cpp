@@ -644,6 +644,28 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
           a.problem = m.str();
         }
       }
+      // Growing motion (StepGuardLimits::max_growth).
+      if (a.problem.empty() && limits.max_growth > 0.0 && (report.substeps > 0 || velocities_given)) {
+        const double h_before = report.substeps == 0 ? dt : previous_h;
+        double now = 0.0, before = 0.0;  // squared speeds [m^2/s^2]
+        for (int i = 0; i < n; ++i) {
+          now += ((rod.positions[i] - ws.substep_positions[i]) / h).squaredNorm();
+          before += (report.substeps > 0 ? ws.previous_velocities[i] : rod.velocities[i]).squaredNorm();
+        }
+        now = std::sqrt(now);
+        before = std::sqrt(before);
+        if (before > 0.0 && now > before && now * h > 1e-6 * d) {
+          const double rate = (now - before) / before / (0.5 * (h + h_before));  // lambda [1/s]
+          a.growth = rate * h;
+          const bool finest = level * 2 > limits.max_substeps;
+          if (a.growth > limits.max_growth && !finest) {
+            const double wanted = a.growth / limits.max_growth / 0.8;
+            while (shrink < 64 && shrink < wanted && level * shrink * 2 <= limits.max_substeps) shrink *= 2;
+            a.problem = "the rod's speed grows at " + g3(rate) + " 1/s: " + g3(a.growth) +
+                        " per step (limit max_growth " + g3(limits.max_growth) + ")";
+          }
+        }
+      }
       // Wall friction at the step's end velocities (WallContactParameters::
       // friction_iterations) that did not converge: the step's friction is
       // off the law by more than the step-error limit.
@@ -687,7 +709,7 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
         level *= shrink;
         continue;
       }
-      if (limits.adaptive) {
+      if (limits.adaptive || limits.max_growth > 0.0) {
         ws.previous_velocities.resize(n);
         for (int i = 0; i < n; ++i) ws.previous_velocities[i] = (rod.positions[i] - ws.substep_positions[i]) / h;
         previous_h = h;

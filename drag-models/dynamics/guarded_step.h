@@ -18,7 +18,9 @@
 //     rotation in the step); the corrected state is the one kept. Where the solver keeps no factors (multi-sphere sections)
 //     by step doubling (one step of h against two of h/2, same drag),
 //   - that no sphere centre ends in, or passes through, a wall, and no new
-//     wall overlap exceeds max_overlap radii.
+//     wall overlap exceeds max_overlap radii,
+//   - that the rod's speed does not grow by more than max_growth per
+//     (sub)step (a rod leaving an unstable state; StepGuardLimits::max_growth).
 // (The force residual of backward Euler at the new state is reported too,
 // but is no usable criterion for stiff rods: any strain the linearisation
 // leaves, times k_n L0, dwarfs the drag at a practical step although the
@@ -121,6 +123,18 @@ struct StepGuardLimits {
   // (restarts and ranks stay identical).
   bool adaptive = false;
   double displacement_tolerance = 1e-2;  // local error of a (sub)step / its displacement [-]
+  // Growing motion (a rod leaving an unstable state: pinned across a pore,
+  // then sliding off a cylinder). The linearised step sees a wall contact's
+  // normal as fixed, so the growth that the normal's turn feeds (and that of
+  // any mode the step's matrix misses) enters once per (sub)step, as
+  // 1 + lambda h instead of exp(lambda h): a large step leaves the unstable
+  // state late. The growth rate lambda of the rod's speed (root sum of
+  // squares over its spheres) is estimated from this and the previous
+  // (sub)step's mean velocities; a (sub)step with lambda h above
+  // `max_growth` is rejected and retried with the substep it asks for.
+  // Motion below 1e-6 d per (sub)step (round-off of a rod at rest) is not
+  // judged. 0: off.
+  double max_growth = 0.1;  // [-]
 };
 
 // Why a (sub)step was or would be rejected; empty when accepted.
@@ -131,6 +145,7 @@ struct StepAssessment {
   double step_error = 0.0;     // Newton-correction (step-doubling) error / step displacement [-] (0 if not checked)
   double bond_strain = 0.0;    // largest |axial strain| after the step [-]
   double truncation_error = 0.0;  // adaptive: local truncation error / step displacement [-] (0 if not checked)
+  double growth = 0.0;         // growth rate of the rod's speed times the (sub)step, lambda h [-] (0 if not judged)
   double bond_load_ratio = 0.0;  // max k_n L0 |d strain| / max |R dx / dt| [-]
   int crossing_sphere = -1;    // a sphere whose centre ended in or crossed a wall, or -1
   int interpenetrating_sphere = -1;  // a sphere pressed > max_overlap radii deeper into another rod's, or -1
@@ -175,7 +190,7 @@ struct GuardWorkspace {
   std::vector<Eigen::Vector3d> middle_positions;  // after the first half step [m]
   double halves_moved = 0.0;    // largest move of a sphere in either half step [m]
   long quiet_steps = 0;         // (sub)steps accepted as quiet half steps, without the full step (a count)
-  std::vector<Eigen::Vector3d> previous_velocities;  // adaptive: mean velocities of the last substep [m/s]
+  std::vector<Eigen::Vector3d> previous_velocities;  // adaptive or max_growth: mean velocities of the last substep [m/s]
   std::vector<char> touching_start, touching_end;    // contact iterations: spheres on a wall
   std::vector<Eigen::Vector3d> iterate_positions;    // the last Newton iterate [m]
   std::vector<double> contact_force_start, contact_force_end;  // Hertz normal force per sphere [N]

@@ -70,6 +70,11 @@ void FixRodImplicit::parse_keywords(int narg, char **arg) {
       if (!(limits_.displacement_tolerance > 0.0 && limits_.displacement_tolerance <= 1.0))
         error->all(FLERR, "fix rod/implicit: tolerance must be in (0, 1] (local displacement error of a substep "
                           "over its displacement)");
+    } else if (strcmp(key, "max_growth") == 0) {
+      limits_.max_growth = parse_number(error, "fix rod/implicit", key, val);
+      if (!(limits_.max_growth >= 0.0 && limits_.max_growth <= 10.0))
+        error->all(FLERR, "fix rod/implicit: max_growth must be in [0, 10] (growth rate of the rod's speed times "
+                          "the substep; 0: off)");
     } else if (strcmp(key, "max_bond_strain") == 0) {
       limits_.max_bond_strain = parse_number(error, "fix rod/implicit", key, val);
       if (!(limits_.max_bond_strain > 0.0 && limits_.max_bond_strain <= 10.0))
@@ -83,7 +88,7 @@ void FixRodImplicit::parse_keywords(int narg, char **arg) {
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix rod/implicit command: unknown keyword '%s' (expected bonds, drag, walls, "
                     "wall_friction, slip_velocity, friction_iterations, friction_tolerance, rod_contact, rod_friction, rod_interaction, max_displacement, "
-                    "accuracy_guard, step_error, max_substeps, max_bond_strain, adaptive, tolerance)", key);
+                    "accuracy_guard, step_error, max_substeps, max_bond_strain, max_growth, adaptive, tolerance)", key);
       error->all(FLERR, msg);
     }
   }

@@ -185,6 +185,11 @@ class TwoWayWindowModel : public LocalDragBase {
   // A rigid shift of the rod by this fraction of its distance to the nearest
   // wall calls for a new solve (see evaluate_with).
   static constexpr double kWallShiftFraction = 0.125;
+  // Largest in-plane turn of the rod [rad] between solves: the stored
+  // resistance is turned with the rod (exact for the continuous problem
+  // away from walls), which leaves the lattice's sub-percent anisotropy.
+  // (For rods of more than ~10 spheres the update distance binds first.)
+  static constexpr double kMaxTurn = 0.1;
   // Two scales (default): the window is solved on d / 2 cells (the walls'
   // reflection and the far field), the fine lattice's free-space Green's
   // table corrects the mobility between footprints closer than kNearReach d.

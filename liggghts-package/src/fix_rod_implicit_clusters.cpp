@@ -225,16 +225,16 @@ void FixRodImplicit::account_guard_report(const std::string &who, const hsrod::G
     unresolved_warned_ = true;
   }
   if (!limits_.adaptive && report.substeps >= kManySubsteps && !substeps_warned_ && comm->me == 0) {
-    // Each substep met the guard's limits, but backward Euler damps motion
-    // that grows: a rod leaving an unstable state (pinned at a cylinder,
-    // then sliding off) leaves it late at such a step (doc page; stress
-    // matrix, session 11: 15 deg behind at 250x the default step).
+    // Each substep met the guard's limits, but the run carries the
+    // first-order error of whatever the guard does not measure (stress
+    // matrix, session 12: a rod released from a pinned state at 250x the
+    // default step ends with the dt/10 run, 8 deg from the converged one).
     char msg[640];
     std::snprintf(msg, sizeof(msg),
                   "fix rod/implicit: %s at step " BIGINT_FORMAT ": the accuracy guard cut the step of dt = %g s "
-                  "into %d substeps: the timestep is far above what the motion allows here, and a fixed step "
-                  "this large can lag fast motion the guard does not see (a rod released from a pinned state); "
-                  "check against a smaller timestep, or use adaptive yes tolerance 1e-3 (said once)",
+                  "into %d substeps: the timestep is far above what the motion allows here, and the run carries "
+                  "the step's first-order error where the guard does not measure it (e.g. a rod released from a "
+                  "pinned state); check against a smaller timestep, or use adaptive yes tolerance 1e-3 (said once)",
                   who.c_str(), update->ntimestep, update->dt, report.substeps);
     error->warning(FLERR, msg);
     substeps_warned_ = true;

@@ -192,10 +192,12 @@ def main(argv=None):
 
     # ---- tables
     md = []
-    ref_mesh = meshes[-1] if meshes else None
+    def finest(k):
+        return max((m for m in meshes if (k, "resolved m%d" % m) in sources), default=None)
     md.append("Per-sphere load of the rod held in the channel flow (F / 3 pi mu d U; sphere 1 the upper, "
-              "downstream end, sphere 4 the lower, upstream end; error = (level - resolved) over the mean "
-              "|F_i| of the resolved case, %%; resolved mesh %s, in brackets the change from mesh 6):\n" % ref_mesh)
+              "downstream end, sphere 4 the lower, upstream end; in brackets: resolved, the change from mesh 6 "
+              "to 8; levels, the error (level - resolved) over the mean |F_i| of the resolved case, %; resolved "
+              "on the finest mesh of the configuration, 8 (6 at x = 48.7 um)):\n")
     md.append("| config (x µm, α) | sphere | resolved F_x | F_y | L1 F_x | F_y | L2 F_x | F_y | L3 F_x | F_y | L4 F_x | F_y |")
     md.append("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
     for load, title in (("driving", None), ("friction_y", "Per-sphere load of the rod translating at +U along y "
@@ -207,9 +209,10 @@ def main(argv=None):
             md.append("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
         for k in keys:
             s = traj[k][0]
-            rsrc = "resolved m%d" % ref_mesh
-            if (k, rsrc) not in sources:
+            ref_mesh = finest(k)
+            if ref_mesh is None:
                 continue
+            rsrc = "resolved m%d" % ref_mesh
             r = sources[(k, rsrc)][load]["F"]
             r6 = sources.get((k, "resolved m6"), {}).get(load, {}).get("F")
             scale = np.linalg.norm(r, axis=1).mean()
@@ -250,10 +253,9 @@ def main(argv=None):
     md.append("| --- | --- | ---: | ---: | ---: | ---: |")
     for k in keys:
         s = traj[k][0]
-        rsrc = "resolved m%d" % ref_mesh
-        if (k, rsrc) not in rig:
+        if finest(k) is None:
             continue
-        Rr, Dr, qr, _ = rig[(k, rsrc)]
+        Rr, Dr, qr, _ = rig[(k, "resolved m%d" % finest(k))]
         for lv in LEVELS:
             Rl, Dl, ql, _ = rig[(k, LEVEL_NAME[lv])]
             md.append("| %s | %s | %+.4f | %+.4f | %+.4f | %+.4f |" % (

@@ -68,7 +68,7 @@ def sphere_positions(x, y, alpha):
     return [(x + (i - 1.5) * D * np.cos(phi), y + (i - 1.5) * D * np.sin(phi)) for i in range(N)]
 
 
-def rod_load(rows, t):
+def rod_load(rows, t, u_ref):
     """(Fx, Fy, Tz about the centroid) over 3 pi mu d U at the output time closest to t."""
     times = sorted({float(r["t"]) for r in rows})
     tt = min(times, key=lambda s: abs(s - t))
@@ -78,7 +78,7 @@ def rod_load(rows, t):
     T = np.array([float(r["Tz"]) for r in sp])
     c = pos.mean(axis=0)
     r = pos - c
-    z0 = 3 * np.pi * MU * D * U
+    z0 = 3 * np.pi * MU * D * u_ref
     return tt, np.array([F[:, 0].sum() / z0, F[:, 1].sum() / z0,
                          ((r[:, 0] * F[:, 1] - r[:, 1] * F[:, 0]).sum() + T.sum()) / (z0 * D)])
 
@@ -88,9 +88,16 @@ def main(argv=None):
     ap.add_argument("build")
     ap.add_argument("--work", default="/tmp/hsrod_throat_replay")
     ap.add_argument("--collect-only", action="store_true", help="read a finished case in --work")
+    ap.add_argument("--time-scale", type=float, default=1.0,
+                    help="S: the same motion S times slower (times x S, inflow and rod speeds / S, CFD step x S: the "
+                         "same displacement per step, Re / S): what is left of Q_replay - Q_steady at S = 10 is "
+                         "not the unsteady term")
+    ap.add_argument("--dt", type=float, default=1e-5, help="CFD step [s] at S = 1 (coupled run: 1e-5)")
     a = ap.parse_args(argv)
+    S = a.time_scale
+    tag = "" if (S == 1.0 and a.dt == 1e-5) else "_S%g_dt%g" % (S, a.dt)
     at = smooth_path()
-    case = os.path.join(a.work, "replay")
+    case = os.path.join(a.work, "replay" + tag)
     cpu = wall = None
     if not a.collect_only:
         scene = json.load(open(os.path.join(HERE, "scene.json")))
@@ -101,8 +108,9 @@ def main(argv=None):
         scene["spheres"] = [{"id": i + 1, "x": [p[0], p[1], 0.5 * scene["channel"]["H"]], "d": D}
                             for i, p in enumerate(sphere_positions(x0, y0, al0))]
         scene["ib"] = dict(scene.get("ib", {}), motion="table", pathTable="path.csv")
-        scene["control"] = dict(scene["control"], steady=False, creeping=True, end_time=T1 - T0, dt=1e-5,
-                                write_interval=1.0)
+        scene["control"] = dict(scene["control"], steady=False, creeping=True, end_time=(T1 - T0) * S,
+                                dt=a.dt * S, write_interval=1e3)
+        scene["inflow"] = dict(scene["inflow"], U=scene["inflow"]["U"] / S)
         if os.path.exists(case):
             shutil.rmtree(case)
         os.makedirs(case)
@@ -115,7 +123,7 @@ def main(argv=None):
                 t = k * DT_PATH
                 (x, y, al), _ = at(T0 + t)
                 for i, p in enumerate(sphere_positions(x, y, al)):
-                    f.write("%.9g,%d,%.12g,%.12g,%.12g\n" % (t, i + 1, p[0], p[1], 0.5 * scene["channel"]["H"]))
+                    f.write("%.9g,%d,%.12g,%.12g,%.12g\n" % (t * S, i + 1, p[0], p[1], 0.5 * scene["channel"]["H"]))
         env = dict(os.environ, RODIBFOAM=os.path.join(a.build, "calibration", "rodIbFoam"))
         env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
         r0, w0 = resource.getrusage(resource.RUSAGE_CHILDREN), time.time()
@@ -143,9 +151,11 @@ def main(argv=None):
     for k, t in enumerate(T_CONFIGS):
         (x, y, al), (vx, vy, da) = at(t)
         q = np.array([vx / U, vy / U, -np.radians(da) * D / U])
-        tt, Q = rod_load(rows, t - T0)
+        tt, Q = rod_load(rows, (t - T0) * S, U / S)
+        tt = tt / S
         head = "%.3f,%.3f,%.4f,%.3f,%.4f,%.4f,%.4f" % (t * 1e3, x * 1e6, y * 1e6, al, q[0], q[1], q[2])
-        out.append(head + ",replay (transient) t=%.1f us,%.4f,%.4f,%.4f" % ((tt + T0) * 1e6, *Q))
+        out.append(head + ",replay (transient%s) t=%.1f us,%.4f,%.4f,%.4f" % (
+            "" if not tag else ", time scale %g, dt %g us" % (S, a.dt * 1e6), (tt + T0) * 1e6, *Q))
         cfg = keys[k]
         for src, r in rigid[cfg].items():
             if not src.startswith("resolved"):
@@ -154,7 +164,7 @@ def main(argv=None):
             R = np.array([float(r["R" + a + b]) for a in "xyt" for b in "xyt"]).reshape(3, 3)
             Qs = Dv - R @ q
             out.append(head + ",quasi-steady %s,%.4f,%.4f,%.4f" % (src, *Qs))
-    with open(os.path.join(HERE, "throat_replay.csv"), "w") as f:
+    with open(os.path.join(HERE, "throat_replay%s.csv" % tag), "w") as f:
         f.write("\n".join(out) + "\n")
     print("\n".join(out))
     return 0

@@ -57,7 +57,10 @@ def resolved_cases():
         key = config_key(g["centre"][0] * 1e6, g["centre"][1] * 1e6, g["row_angle_deg"])
         z0 = 3 * np.pi * s["mu"] * s["d"] * s["U"]
         sp = sorted(r["spheres"], key=lambda q: q["id"])
-        out.setdefault((key, s["cells_per_diameter"]), {})[s["motion"]] = {
+        mesh = s["cells_per_diameter"]
+        if "refine_margin" in s.get("mesh", {}):       # a refinement-box variant: its own source
+            mesh = "%d, box %g d" % (mesh, s["mesh"]["refine_margin"])
+        out.setdefault((key, mesh), {})[s["motion"]] = {
             "F": np.array([[q["F"][0], q["F"][1]] for q in sp]) / z0,
             "T": np.array([q["T"][2] for q in sp]) / (z0 * s["d"]),
             "pos": np.array([[q["x"][0], q["x"][1]] for q in sp]) / s["d"],
@@ -70,7 +73,9 @@ def resolved_cases():
 def level_cases(binary, plan, csv_path):
     args = [binary, csv_path]
     for s in plan["series"]:
-        args += ["--config", "%.6g,%.6g,%.6g" % (s["centre"][0] * 1e6, s["centre"][1] * 1e6, s["row_angle_deg"])]
+        c = "%.6g,%.6g,%.6g" % (s["centre"][0] * 1e6, s["centre"][1] * 1e6, s["row_angle_deg"])
+        if c not in args:                      # a configuration on several meshes: once
+            args += ["--config", c]
     subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
     out = {}
     d = plan["d"]
@@ -138,12 +143,16 @@ def main(argv=None):
     os.unlink(lev_csv)
     traj = trajectory_rates(plan)
     keys = list(traj)
-    meshes = sorted({m for (_, m) in res})
+    meshes = sorted({m for (_, m) in res if isinstance(m, int)})
+    variants = sorted({m for (_, m) in res if not isinstance(m, int)})
     sources = {}
     for k in keys:
         for m in meshes:
             if (k, m) in res and all(l in res[(k, m)] for l in LOADS):
                 sources[(k, "resolved m%d" % m)] = res[(k, m)]
+        for m in variants:
+            if (k, m) in res and all(l in res[(k, m)] for l in LOADS):
+                sources[(k, "resolved m%s" % m)] = res[(k, m)]
         for lv in LEVELS:
             sources[(k, LEVEL_NAME[lv])] = lev[(k, lv)]
 
@@ -245,22 +254,39 @@ def main(argv=None):
                 D[0], D[1], D[2], R[0, 0], R[1, 1], R[2, 2], R[0, 1], R[1, 2], q[0], q[1], q[2], lk[1]))
             first = False
         md.append("| | resolved trajectory | | | | | | | | | %+.4f | %+.4f | %+.4f | |" % tuple(tr))
-    # attribution: swap held load and resistance between resolved and level
-    md.append("\nWhere a level's lateral velocity error comes from: V_y/U free with the level's held load D and "
-              "the resolved resistance R (\"level D\"), and with the resolved D and the level's R (\"level R\"), "
-              "against the resolved and the level's own:\n")
-    md.append("| config | level | resolved | level | level D, resolved R | resolved D, level R |")
+    # decomposition of the free lateral velocity: V_y = (D_y - R_yx V_x - R_yt Omega) / R_yy
+    md.append("\nWhat the free lateral velocity is made of, V_y = (D_y - R_yx V_x - R_yt Ω) / R_yy (velocities "
+              "over U): the held lateral load D_y / R_yy (\"push\"), the x-y coupling of the resistance at the "
+              "free V_x, -R_yx V_x / R_yy, and the rotation term; the levels' error of V_y split into the two:\n")
+    md.append("| config | source | push D_y / R_yy | coupling -R_yx V_x / R_yy | rotation -R_yt Ω / R_yy | V_y / U |")
     md.append("| --- | --- | ---: | ---: | ---: | ---: |")
     for k in keys:
         s = traj[k][0]
-        if finest(k) is None:
+        first = True
+        for (kk, src), (R, D, q, lk) in rig.items():
+            if kk != k or src.startswith("resolved m6") and (k, "resolved m8") in rig:
+                continue
+            md.append("| %s | %s | %+.3f | %+.3f | %+.4f | %+.4f |" % (
+                ("%.1f, %.1f°" % (s["centre"][0] * 1e6, s["paper_angle_deg"])) if first else "", src,
+                D[1] / R[1, 1], -R[1, 0] * q[0] / R[1, 1], -R[1, 2] * q[2] / R[1, 1], q[1]))
+            first = False
+    # lateral displacement across the throat from the quasi-steady free motion (trapezoid of V_y / V_x over
+    # the configurations' x; angles and lateral positions held at the trajectory's)
+    xs = [traj[k][0]["centre"][0] * 1e6 for k in keys]
+    ys = [traj[k][0]["centre"][1] * 1e6 for k in keys]
+    W = 36.0
+    md.append("\nLateral displacement / W from x = %.1f to %.1f µm: integral of V_y / V_x of the free rigid rod "
+              "along x (trapezoid over the configurations; the angle and y of the trajectory), against the "
+              "trajectory's own Δy:\n" % (xs[0], xs[-1]))
+    md.append("| source | Δy / W |")
+    md.append("| --- | ---: |")
+    for src in ["resolved m6"] + [LEVEL_NAME[lv] for lv in LEVELS]:
+        if not all((k, src) in rig for k in keys):
             continue
-        Rr, Dr, qr, _ = rig[(k, "resolved m%d" % finest(k))]
-        for lv in LEVELS:
-            Rl, Dl, ql, _ = rig[(k, LEVEL_NAME[lv])]
-            md.append("| %s | %s | %+.4f | %+.4f | %+.4f | %+.4f |" % (
-                "%.1f, %.1f°" % (s["centre"][0] * 1e6, s["paper_angle_deg"]) if lv == "isotropic" else "",
-                LEVEL_NAME[lv], qr[1], ql[1], np.linalg.solve(Rr, Dl)[1], np.linalg.solve(Rl, Dr)[1]))
+        slope = [rig[(k, src)][2][1] / rig[(k, src)][2][0] for k in keys]
+        dy = sum(0.5 * (slope[i] + slope[i + 1]) * (xs[i + 1] - xs[i]) for i in range(len(keys) - 1))
+        md.append("| %s | %+.4f |" % (src, dy / W))
+    md.append("| resolved trajectory | %+.4f |" % ((ys[-1] - ys[0]) / W))
     # cost
     md.append("\nrodIbFoam cases (one core, `nice -n 10`, shared machine):\n")
     md.append("| config | mesh | load | cells | iterations | CPU [s] | wall [s] |")
@@ -268,12 +294,12 @@ def main(argv=None):
     total = 0.0
     for k in keys:
         s = traj[k][0]
-        for m in meshes:
+        for m in meshes + variants:
             for ld in LOADS:
                 e = res.get((k, m), {}).get(ld)
                 if e:
                     total += e["cpu"]
-                    md.append("| %.1f, %.1f° | %d | %s | %d | %d | %.1f | %.1f |" % (
+                    md.append("| %.1f, %.1f° | %s | %s | %d | %d | %.1f | %.1f |" % (
                         s["centre"][0] * 1e6, s["paper_angle_deg"], m, ld, e["cells"], e["iterations"], e["cpu"],
                         e["wall"]))
     md.append("\n%d cases, %.0f s CPU in all." % (sum(len(c) for c in res.values()), total))

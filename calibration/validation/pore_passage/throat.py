@@ -59,7 +59,7 @@ def resolved_cases():
         sp = sorted(r["spheres"], key=lambda q: q["id"])
         mesh = s["cells_per_diameter"]
         if "refine_margin" in s.get("mesh", {}):       # a refinement-box variant: its own source
-            mesh = "%d, box %g d" % (mesh, s["mesh"]["refine_margin"])
+            mesh = "%d box %gd" % (mesh, s["mesh"]["refine_margin"])
         out.setdefault((key, mesh), {})[s["motion"]] = {
             "F": np.array([[q["F"][0], q["F"][1]] for q in sp]) / z0,
             "T": np.array([q["T"][2] for q in sp]) / (z0 * s["d"]),

@@ -15,7 +15,9 @@ y 10-26 um refined once, 0.5 um = d/6; the same PIMPLE settings and CFD step
 10 us as the coupled run; fluid and rod start from rest at T0, 150 us before
 the first throat configuration). No spin is prescribed (table motion moves
 the sphere centres only). The rod's load Q = (F_x, F_y, T_z about the
-centroid) is read at the throat configurations' times (1.10, 1.20, 1.30, 1.40 ms) and
+centroid) is read at the throat configurations' times (1.10, 1.20, 1.30, 1.40 ms), and its mean and
+standard deviation over +-30 us around them (the loads of the moving spheres oscillate as they cross
+cells), and
 compared with the quasi-steady load of the same motion from the rigid steady
 cases, Q_steady = D - R q (throat_rigid.csv, resolved mesh 6 and the finest
 mesh), q = (V_x, V_y, Omega) of the smoothed path. A force-free rod gives
@@ -83,6 +85,14 @@ def rod_load(rows, t, u_ref):
                          ((r[:, 0] * F[:, 1] - r[:, 1] * F[:, 0]).sum() + T.sum()) / (z0 * D)])
 
 
+def rod_load_window(rows, t, u_ref, half):
+    """Mean and standard deviation of the rod load over the outputs within t +- half (the moving
+    immersed boundary's loads oscillate as the spheres cross cells)."""
+    times = sorted({float(r["t"]) for r in rows})
+    qs = np.array([rod_load(rows, s, u_ref)[1] for s in times if abs(s - t) <= half + 1e-12])
+    return qs.mean(axis=0), qs.std(axis=0)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("build")
@@ -133,6 +143,12 @@ def main(argv=None):
         cpu, wall = r1.ru_utime + r1.ru_stime - r0.ru_utime - r0.ru_stime, time.time() - w0
         if rc != 0:
             sys.exit("replay failed: see %s/log.rodIbFoam" % case)
+    if cpu is None:                            # --collect-only: the solver's own last ExecutionTime / ClockTime
+        import re
+        log = open(os.path.join(case, "log.rodIbFoam")).read()
+        cpu = float(re.findall(r"ExecutionTime = ([0-9.eE+-]+) s", log)[-1])
+        clock = re.findall(r"ClockTime = ([0-9.eE+-]+) s", log)
+        wall = float(clock[-1]) if clock else None
     rows = list(csv.DictReader(l for l in open(os.path.join(case, "postProcessing", "rodIbFoam", "sphereForces.csv"))
                                if not l.startswith("#")))
     cells = None
@@ -146,7 +162,8 @@ def main(argv=None):
            "transient run; rod load over 3 pi mu d U (U = 0.01 m/s), T_z over 3 pi mu d^2 U; Q_steady = D - R q of "
            "the rigid steady cases (throat_rigid.csv); case %s, CPU %s s, wall %s s" % (
                case, "%.0f" % cpu if cpu else "?", "%.0f" % wall if wall else "?"),
-           "t_ms,x_um,y_um,alpha_deg,Vx_over_U,Vy_over_U,Om_d_over_U,source,Qx,Qy,Qt"]
+           "t_ms,x_um,y_um,alpha_deg,Vx_over_U,Vy_over_U,Om_d_over_U,source,Qx,Qy,Qt,"
+           "Qx_mean_30us,Qy_mean_30us,Qt_mean_30us,Qx_std_30us,Qy_std_30us,Qt_std_30us"]
     keys = list(rigid)
     for k, t in enumerate(T_CONFIGS):
         (x, y, al), (vx, vy, da) = at(t)
@@ -154,8 +171,9 @@ def main(argv=None):
         tt, Q = rod_load(rows, (t - T0) * S, U / S)
         tt = tt / S
         head = "%.3f,%.3f,%.4f,%.3f,%.4f,%.4f,%.4f" % (t * 1e3, x * 1e6, y * 1e6, al, q[0], q[1], q[2])
-        out.append(head + ",replay (transient%s) t=%.1f us,%.4f,%.4f,%.4f" % (
-            "" if not tag else ", time scale %g, dt %g us" % (S, a.dt * 1e6), (tt + T0) * 1e6, *Q))
+        Qm, Qs = rod_load_window(rows, (t - T0) * S, U / S, 30e-6 * S)
+        out.append(head + ",replay (transient%s) t=%.1f us,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f" % (
+            "" if not tag else "; time scale %g; dt %g us" % (S, a.dt * 1e6), (tt + T0) * 1e6, *Q, *Qm, *Qs))
         cfg = keys[k]
         for src, r in rigid[cfg].items():
             if not src.startswith("resolved"):
@@ -163,7 +181,7 @@ def main(argv=None):
             Dv = np.array([float(r["D" + c]) for c in "xyt"])
             R = np.array([float(r["R" + a + b]) for a in "xyt" for b in "xyt"]).reshape(3, 3)
             Qs = Dv - R @ q
-            out.append(head + ",quasi-steady %s,%.4f,%.4f,%.4f" % (src, *Qs))
+            out.append(head + ",quasi-steady %s,%.4f,%.4f,%.4f,,,,,," % (src, *Qs))
     with open(os.path.join(HERE, "throat_replay%s.csv" % tag), "w") as f:
         f.write("\n".join(out) + "\n")
     print("\n".join(out))

@@ -2,7 +2,7 @@
 """throat_coupled_step.py: the coupled passage (scene.json) at half the CFD
 step against the recorded one, in the throat.
 
-    # the case: scene.json with dem.coupling_interval 500 (CFD step 5 us) and control.end_time 1.5e-3
+    # the case: scene.json with dem.coupling_interval 500 (CFD step 5 us) and control.end_time 2e-3
     python3 calibration/tools/hsrod_case.py SCENE_DT5.json CASE && RODIBFOAM=... nice -n 10 CASE/Allrun
     /usr/bin/python3 calibration/validation/pore_passage/throat_coupled_step.py CASE
 
@@ -58,16 +58,22 @@ def main(argv):
     for r in csv.DictReader(l for l in open(os.path.join(HERE, "throat_rigid.csv")) if not l.startswith("#")):
         if r["source"] in ("resolved m8", "resolved m6"):
             rigid.setdefault(r["config"], {})[r["source"]] = float(r["Vy_free"])
-    print("x [um] | lateral/W dt 10 us | dt 5 us | angle dt 10 | dt 5 | t dt 10 [ms] | dt 5")
-    for xq in (30.0, 35.0, 38.7, 42.0, 45.5, 48.7, 51.0, 55.5):
+    levels = [(n, read(os.path.join(HERE, f))) for n, f in (("L1", "level1_isotropic.csv"), ("L2", "level2_local.csv"),
+                                                            ("L3", "level3_nonlocal.csv"), ("L4", "level4_twoway.csv"))]
+    print("| x [µm] | lateral/W, step 10 µs (recorded) | step 5 µs | %s | angle [deg] 10 µs / 5 µs | t [ms] 10 µs / 5 µs |"
+          % " | ".join(n for n, _ in levels))
+    print("| ---: | ---: | ---: | %s | ---: | ---: |" % " | ".join("---:" for _ in levels))
+    for xq in (30.0, 35.0, 38.7, 42.0, 45.5, 48.7, 51.0, 55.5, 60.0, 64.0):
         if xq * 1e-6 > new[1].max() or xq * 1e-6 > ref[1].max():
             continue
         l10, t10 = at_x(ref[0], ref[1], ref[2], xq * 1e-6)
         l5, t5 = at_x(new[0], new[1], new[2], xq * 1e-6)
         a10, _ = at_x(ref[0], ref[1], ref[3], xq * 1e-6)
         a5, _ = at_x(new[0], new[1], new[3], xq * 1e-6)
-        print("%5.1f | %+.4f | %+.4f | %.2f | %.2f | %.3f | %.3f" % (
-            xq, (l10 - 18e-6) / W, (l5 - 18e-6) / W, a10, a5, t10 * 1e3, t5 * 1e3))
+        lv = [(at_x(r[0], r[1], r[2], xq * 1e-6)[0] - 18e-6) / W for _, r in levels]
+        print("| %.1f | %+.4f | %+.4f | %s | %.2f / %.2f | %.3f / %.3f |" % (
+            xq, (l10 - 18e-6) / W, (l5 - 18e-6) / W, " | ".join("%+.4f" % v for v in lv), a10, a5, t10 * 1e3,
+            t5 * 1e3))
     print("V_y / U at equal x (smoothed): config | dt 10 us | dt 5 us | rigid steady")
     for cfg, vals in rigid.items():
         xq = float(cfg.split(",")[0]) * 1e-6

@@ -4,10 +4,11 @@ step against the recorded one, in the throat.
 
     # the case: scene.json with dem.coupling_interval 500 (CFD step 5 us) and control.end_time 2e-3
     python3 calibration/tools/hsrod_case.py SCENE_DT5.json CASE && RODIBFOAM=... nice -n 10 CASE/Allrun
-    /usr/bin/python3 calibration/validation/pore_passage/throat_coupled_step.py CASE
+    /usr/bin/python3 calibration/validation/pore_passage/throat_coupled_step.py CASE [CASE_2.5US]
 
 Copies CASE/postProcessing/rodIbFoam/rodMeasures.csv to
-coupled_dt5_rodMeasures_raw.csv (beside this file) and prints, at equal
+coupled_dt5_rodMeasures_raw.csv (beside this file; a second case, the same at
+2.5 us to 1.5 ms: coupled_dt2.5_rodMeasures_raw.csv) and prints, at equal
 rod-centre x, lateral / W and the paper angle of the recorded run
 (resolved.csv, step 10 us) and of the 5 us run, and both runs' smoothed V_y / U
 (2-point average, local quadratic fit over +-40 us in time) at the throat
@@ -54,15 +55,20 @@ def main(argv):
     shutil.copy(raw, os.path.join(HERE, "coupled_dt5_rodMeasures_raw.csv"))
     ref = read(os.path.join(HERE, "resolved.csv"))
     new = read(raw)
+    fine = None
+    if len(argv) > 2:
+        raw2 = os.path.join(argv[2], "postProcessing", "rodIbFoam", "rodMeasures.csv")
+        shutil.copy(raw2, os.path.join(HERE, "coupled_dt2.5_rodMeasures_raw.csv"))
+        fine = read(raw2)
     rigid = {}
     for r in csv.DictReader(l for l in open(os.path.join(HERE, "throat_rigid.csv")) if not l.startswith("#")):
         if r["source"] in ("resolved m8", "resolved m6"):
             rigid.setdefault(r["config"], {})[r["source"]] = float(r["Vy_free"])
     levels = [(n, read(os.path.join(HERE, f))) for n, f in (("L1", "level1_isotropic.csv"), ("L2", "level2_local.csv"),
                                                             ("L3", "level3_nonlocal.csv"), ("L4", "level4_twoway.csv"))]
-    print("| x [µm] | lateral/W, step 10 µs (recorded) | step 5 µs | %s | angle [deg] 10 µs / 5 µs | t [ms] 10 µs / 5 µs |"
-          % " | ".join(n for n, _ in levels))
-    print("| ---: | ---: | ---: | %s | ---: | ---: |" % " | ".join("---:" for _ in levels))
+    print("| x [µm] | lateral/W, step 10 µs (recorded) | step 5 µs | step 2.5 µs | %s | angle [deg] 10 µs / 5 µs | "
+          "t [ms] 10 µs / 5 µs |" % " | ".join(n for n, _ in levels))
+    print("| ---: | ---: | ---: | ---: | %s | ---: | ---: |" % " | ".join("---:" for _ in levels))
     for xq in (30.0, 35.0, 38.7, 42.0, 45.5, 48.7, 51.0, 55.5, 60.0, 64.0):
         if xq * 1e-6 > new[1].max() or xq * 1e-6 > ref[1].max():
             continue
@@ -71,10 +77,12 @@ def main(argv):
         a10, _ = at_x(ref[0], ref[1], ref[3], xq * 1e-6)
         a5, _ = at_x(new[0], new[1], new[3], xq * 1e-6)
         lv = [(at_x(r[0], r[1], r[2], xq * 1e-6)[0] - 18e-6) / W for _, r in levels]
-        print("| %.1f | %+.4f | %+.4f | %s | %.2f / %.2f | %.3f / %.3f |" % (
-            xq, (l10 - 18e-6) / W, (l5 - 18e-6) / W, " | ".join("%+.4f" % v for v in lv), a10, a5, t10 * 1e3,
+        l25 = "%+.4f" % ((at_x(fine[0], fine[1], fine[2], xq * 1e-6)[0] - 18e-6) / W) \
+            if fine is not None and xq * 1e-6 < fine[1].max() else "-"
+        print("| %.1f | %+.4f | %+.4f | %s | %s | %.2f / %.2f | %.3f / %.3f |" % (
+            xq, (l10 - 18e-6) / W, (l5 - 18e-6) / W, l25, " | ".join("%+.4f" % v for v in lv), a10, a5, t10 * 1e3,
             t5 * 1e3))
-    print("V_y / U at equal x (smoothed): config | dt 10 us | dt 5 us | rigid steady")
+    print("V_y / U at equal x (smoothed): config | dt 10 us | dt 5 us | dt 2.5 us | rigid steady")
     for cfg, vals in rigid.items():
         xq = float(cfg.split(",")[0]) * 1e-6
         if xq > new[1].max() - 2e-6:
@@ -83,7 +91,10 @@ def main(argv):
         _, t5 = at_x(new[0], new[1], new[2], xq)
         v10 = smooth_rate(ref[0], ref[2], t10) / U
         v5 = smooth_rate(new[0], new[2], t5) / U
-        print("%s | %+.4f | %+.4f | %+.4f (%s)" % (cfg, v10, v5, vals.get("resolved m8", vals.get("resolved m6")),
+        v25 = float("nan")
+        if fine is not None and xq < fine[1].max() - 2e-6:
+            v25 = smooth_rate(fine[0], fine[2], at_x(fine[0], fine[1], fine[2], xq)[1]) / U
+        print("%s | %+.4f | %+.4f | %+.4f | %+.4f (%s)" % (cfg, v10, v5, v25, vals.get("resolved m8", vals.get("resolved m6")),
                                                   "m8" if "resolved m8" in vals else "m6"))
     return 0
 

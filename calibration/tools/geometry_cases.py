@@ -45,7 +45,8 @@ def load_cases(outs):
         for f in sorted(glob.glob(os.path.join(out, "results", "*.json"))):
             with open(f) as fh:
                 r = json.load(fh)
-            if r.get("schema") != "hsrod-campaign-case 1" or "geometry" not in r["spec"]:
+            if r.get("schema") != "hsrod-campaign-case 1" or "geometry" not in r["spec"] \
+                    or r["spec"]["geometry"]["kind"] == "throat":   # pore_passage/throat.py reads these
                 continue
             r["source"] = os.path.relpath(os.path.abspath(f), ROOT)
             s = r["spec"]

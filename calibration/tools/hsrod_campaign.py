@@ -108,13 +108,23 @@ def load_plan(path):
 #         angle "row_angle_deg" to the wall (0 parallel, 90 perpendicular),
 #         smallest surface gap "gap" d; channel {"W_over_H", "L_over_H"};
 #   pore  the same beside the lower cylinder of a pore constriction at the
-#         channel's middle, channel {"W_over_H", "L_over_H", "R_over_H"}.
+#         channel's middle, channel {"W_over_H", "L_over_H", "R_over_H"};
+#   throat a rigid straight row at a given place in a channel with both pore
+#         cylinders, all in SI units: channel {"L", "W", "R", "x"} (cylinders
+#         of radius R on both side walls at x), "centre" [x, y] of the row,
+#         "row_angle_deg" its lab direction from x (sphere 1 at centre -
+#         (n-1)/2 d (cos, sin)); loads "driving" (held in the channel flow),
+#         "friction_x" / "friction_y" (translating at +U along x / y through
+#         fluid at rest) and "rotation" (turning at U / d about +z about the
+#         centroid, spheres spinning with it): the rigid resistance and the
+#         held load of one configuration (calibration/validation/pore_passage,
+#         the throat configurations of the resolved passage).
 # Near a wall the slit is no longer isotropic in its plane: the in-plane angle
 # is a parameter, the held run is in the channel flow (along the wall) and the
 # dragged run translates the row at "drag_angle_deg" (default 45: along -x and
 # towards the wall at once; the totals along and across the wall separate by
 # the mirror symmetry x -> -x of these rows).
-GEOMETRIES = ("slit", "bent", "wall", "pore")
+GEOMETRIES = ("slit", "bent", "wall", "pore", "throat")
 
 
 def case_spec(plan, series, load, n_d):
@@ -140,6 +150,20 @@ def case_spec(plan, series, load, n_d):
         spec["mesh"] = dict(series.get("mesh", {}))        # channelBody: its own mesh keys
         spec["flow_angle_deg"] = float(series.get("drag_angle_deg", 45.0)) if load == "friction" else 0.0
         tag = "%s_a%g_g%g_" % (geometry, spec["geometry"]["row_angle_deg"], spec["geometry"]["gap"])
+    elif geometry == "throat":
+        ch = dict(series["channel"])
+        spec["geometry"] = {"kind": "throat", "centre": [float(v) for v in series["centre"]],
+                            "row_angle_deg": float(series["row_angle_deg"]), "channel": ch}
+        spec["mesh"] = dict(series.get("mesh", {}))        # channelBody: its own mesh keys
+        motions = {"driving": ("driving", 0.0), "friction_x": ("friction", 180.0),
+                   "friction_y": ("friction", -90.0), "rotation": ("rotation", 0.0)}
+        if load not in motions:
+            sys.exit("hsrod_campaign: throat loads are %s (got '%s')" % (", ".join(motions), load))
+        spec["motion"] = load
+        spec["load"], spec["flow_angle_deg"] = motions[load]
+        tag = "throat_x%.2f_y%.2f_a%.1f_" % (spec["geometry"]["centre"][0] * 1e6,
+                                     spec["geometry"]["centre"][1] * 1e6,
+                                     spec["geometry"]["row_angle_deg"])
     else:
         tag = ""
     key = json.dumps({k: v for k, v in spec.items() if k != "role"}, sort_keys=True)
@@ -163,6 +187,17 @@ def expand(plan):
 def scene_of(spec):
     ctl = dict(spec["control"])
     geo = spec.get("geometry", {"kind": "slit"})
+    if geo["kind"] == "throat":
+        ch = geo["channel"]
+        return {"kind": "channelBody", "d": spec["d"], "beta": spec["beta"], "U": spec["U"],
+                "channel": {"L": ch["L"], "W": ch["W"]},
+                "pore": {"R": ch["R"], "x": ch["x"]},
+                "body": {"n": spec["n"], "spacing": spec["spacing"], "angle_deg": geo["row_angle_deg"],
+                         "near": "given", "centre": geo["centre"]},
+                "load": spec["load"], "flow_angle_deg": spec["flow_angle_deg"],
+                "fluid": {"mu": spec["mu"], "rho": spec["rho"]},
+                "mesh": dict(spec["mesh"], cells_per_diameter=spec["cells_per_diameter"]),
+                "ib": {"minCellsPerDiameter": 3}, "control": ctl}
     if geo["kind"] in ("wall", "pore"):
         H = spec["d"] / spec["beta"]
         ch = geo["channel"]

@@ -740,13 +740,16 @@ def channel_body_spheres(scene):
                    default L/2);
       near "pore": the lower pore cylinder (axis (pore.x, 0), radius pore.R),
                    the row's centre at x = pore.x (the throat), beside the
-                   cylinder."""
+                   cylinder;
+      near "given": the row's centre at body.centre [x, y] [m] (body.gap is
+                   not used), e.g. a tilted rod in the throat between both
+                   pore cylinders (campaign geometry "throat")."""
     d, H = scene["d"], scene["d"] / scene["beta"]
     ch, body = scene["channel"], scene["body"]
     n, s = int(body.get("n", 1)), float(body.get("spacing", 1.0)) * d
     a = math.radians(float(body.get("angle_deg", 0.0)))
-    gap = float(body["gap"]) * d
     near = body.get("near", "wall")
+    gap = float(body.get("gap", 0.0)) * d
     offs = [((i - 0.5 * (n - 1)) * s * math.cos(a), (i - 0.5 * (n - 1)) * s * math.sin(a)) for i in range(n)]
     if near == "wall":
         xc = float(body.get("x", 0.5 * ch["L"]))
@@ -762,8 +765,10 @@ def channel_body_spheres(scene):
             mid = 0.5 * (lo + hi)
             lo, hi = (mid, hi) if surface_gap(mid) < gap else (lo, mid)
         yc = 0.5 * (lo + hi)
+    elif near == "given":
+        xc, yc = float(body["centre"][0]), float(body["centre"][1])
     else:
-        sys.exit("hsrod_case: channelBody body.near must be wall or pore (got '%s')" % near)
+        sys.exit("hsrod_case: channelBody body.near must be wall, pore or given (got '%s')" % near)
     out = [{"id": i + 1, "x": [xc + o[0], yc + o[1], 0.5 * H], "d": d} for i, o in enumerate(offs)]
     for sp in out:
         if not (0.5 * d < sp["x"][1] < ch["W"] - 0.5 * d and 0.5 * d < sp["x"][0] < ch["L"] - 0.5 * d):
@@ -781,7 +786,11 @@ def make_channel_body(scene, case):
                        Stokes resistance, so a motion towards the wall is
                        allowed;
       load "driving":  the row is held in the channel flow of mean velocity
-                       U (flow-rate inlet at x = 0, outlet p = 0).
+                       U (flow-rate inlet at x = 0, outlet p = 0);
+      load "rotation": the row turns rigidly about the centroid of its
+                       sphere centres at Omega = U / d about +z (sphere i
+                       moves with Omega e_z x (x_i - c) and spins with
+                       Omega e_z) through fluid at rest.
     Mesh: uniform cubes of 2 d / cells_per_diameter (the pore's body-fitted
     blocks for a pore), refined once (refineMesh) in a full-height box
     mesh.refine_margin d (default 1) around the spheres, so the spheres and
@@ -801,10 +810,18 @@ def make_channel_body(scene, case):
         for sp in spheres:
             sp["v"] = [-U * math.cos(f), -U * math.sin(f), 0.0]
         inflow = {"type": "meanVelocity", "U": 0.0}
+    elif load == "rotation":
+        om = U / d
+        cx = sum(sp["x"][0] for sp in spheres) / len(spheres)
+        cy = sum(sp["x"][1] for sp in spheres) / len(spheres)
+        for sp in spheres:
+            sp["v"] = [-om * (sp["x"][1] - cy), om * (sp["x"][0] - cx), 0.0]
+            sp["omega"] = [0.0, 0.0, om]
+        inflow = {"type": "meanVelocity", "U": 0.0}
     elif load == "driving":
         inflow = {"type": "meanVelocity", "U": U}
     else:
-        sys.exit("hsrod_case: channelBody load must be friction or driving (got '%s')" % load)
+        sys.exit("hsrod_case: channelBody load must be friction, driving or rotation (got '%s')" % load)
     margin = float(m.get("refine_margin", 1.0)) * d
     lo = [max(0.0, min(sp["x"][k] for sp in spheres) - 0.5 * d - margin) for k in (0, 1)] + [-0.01 * H]
     hi = [min((L, W)[k], max(sp["x"][k] for sp in spheres) + 0.5 * d + margin) for k in (0, 1)] + [1.01 * H]

@@ -279,6 +279,24 @@ Eigen::MatrixXd BrinkmanWindow::solve_at(const std::vector<NodeForces>& node_for
   return lu_->solve_selected(rhs, at_nodes);
 }
 
+Eigen::MatrixXd BrinkmanWindow::weighted_response(const std::vector<NodeForces>& node_forces,
+                                                  const std::vector<NodeForces>& read_weights) const {
+  std::vector<SparseLuFactors::SparseColumn> rhs(node_forces.size());
+  for (std::size_t c = 0; c < node_forces.size(); ++c) {
+    rhs[c].reserve(node_forces[c].size());
+    for (const auto& entry : node_forces[c]) {
+      if (entry.first < 0 || entry.first >= unknowns_)
+        throw std::invalid_argument("BrinkmanWindow::weighted_response: node out of range");
+      rhs[c].emplace_back(entry.first, force_scale_[entry.first] * entry.second);
+    }
+  }
+  for (const auto& row : read_weights)
+    for (const auto& entry : row)
+      if (entry.first < 0 || entry.first >= unknowns_)
+        throw std::invalid_argument("BrinkmanWindow::weighted_response: node out of range");
+  return lu_->bilinear(read_weights, rhs);
+}
+
 int BrinkmanWindow::u_unknown(int i, int j) const {
   const WindowLattice& g = lattice_;
   if (i < 0 || i > g.nx || j < 0 || j >= g.ny) return -1;

@@ -109,6 +109,14 @@ class BrinkmanWindow {
   // update needs the response at the spheres' footprints only).
   using NodeForces = std::vector<std::pair<int, double>>;
   Eigen::MatrixXd solve_at(const std::vector<NodeForces>& node_forces, const std::vector<int>& at_nodes) const;
+  // Weighted means of the velocities for forces given as in solve_at:
+  // out(r, c) = sum_k weight_k u_c(node_k) over the (node, weight) pairs of
+  // `read_weights[r]` (nodes distinct within each), for every force column
+  // c. The same values as weighting the rows of solve_at to round-off, at a
+  // fraction of its work for footprints (SparseLuFactors::bilinear: no
+  // back-substitution over the whole window).
+  Eigen::MatrixXd weighted_response(const std::vector<NodeForces>& node_forces,
+                                    const std::vector<NodeForces>& read_weights) const;
 
   // Read access for field output (flow/window_flow_field.h).
   // Unknown of the u node (i, j), 0 <= i <= nx, 0 <= j < ny, and of the v

@@ -391,30 +391,16 @@ Eigen::MatrixXd TwoWayWindowModel::footprint_mobility(const RodGeometry& rod, co
   std::vector<Footprint> prints;
   prints.reserve(n);
   for (const auto& x : rod.positions) prints.push_back(footprint(window, x));
-  // Unit forces spread over each footprint, the response read at the footprints' nodes only.
+  // Unit forces spread over each footprint, the response averaged over the
+  // footprints with the same weights (BrinkmanWindow::weighted_response).
   std::vector<BrinkmanWindow::NodeForces> forces(2 * n);
-  std::vector<int> at_nodes;
-  std::vector<int> first_row(2 * n);  // row of at_nodes where footprint (i, a) starts
   for (int i = 0; i < n; ++i)
     for (int a = 0; a < 2; ++a) {
-      first_row[2 * i + a] = static_cast<int>(at_nodes.size());
-      for (std::size_t k = 0; k < prints[i].nodes[a].size(); ++k) {
+      forces[2 * i + a].reserve(prints[i].nodes[a].size());
+      for (std::size_t k = 0; k < prints[i].nodes[a].size(); ++k)
         forces[2 * i + a].emplace_back(prints[i].nodes[a][k], prints[i].weights[a][k]);
-        at_nodes.push_back(prints[i].nodes[a][k]);
-      }
     }
-  const Eigen::MatrixXd velocity = window.solve_at(forces, at_nodes);
-  Eigen::MatrixXd mobility(2 * n, 2 * n);
-  for (int i = 0; i < n; ++i)
-    for (int a = 0; a < 2; ++a) {
-      const int row = 2 * i + a;
-      for (int col = 0; col < 2 * n; ++col) {
-        double m = 0.0;
-        for (std::size_t k = 0; k < prints[i].nodes[a].size(); ++k)
-          m += prints[i].weights[a][k] * velocity(first_row[row] + static_cast<int>(k), col);
-        mobility(row, col) = m;
-      }
-    }
+  Eigen::MatrixXd mobility = window.weighted_response(forces, forces);
   if (two_scales()) {
     // The fine lattice's free-space mobility replaces the window lattice's
     // between nearby footprints (each footprint with itself and with its

@@ -16,7 +16,8 @@
 // footprint average <u> of the total flow:
 //     P_i = zeta_o (c <u>_i - v_i),   <u> = <u_bg> - M P,
 // where M [m/(N s)] is the window's mobility between footprints (one sparse
-// factorisation of the window operator, 2n solves per update) and c = 3/2
+// factorisation of the window operator; per update two forward
+// substitutions over the footprints' reaches, BrinkmanWindow::weighted_response) and c = 3/2
 // the mid-plane factor. The footprint's self-mobility on the grid is not a
 // sphere's: it is replaced by the sphere's own (1/zeta_o), removing the
 // self term m_free of an isolated footprint in free space, measured at
@@ -78,12 +79,12 @@ namespace hsrod {
 // Counters of the work a level-4 model did (tests and benchmarks read them).
 struct TwoWayWindowStatistics {
   long evaluations = 0;      // evaluate() calls
-  long updates = 0;          // resistance re-solves (2n sparse solves each)
+  long updates = 0;          // resistance re-solves (the footprint mobility of 2n columns each)
   long placements = 0;       // window placements
   long factorisations = 0;   // sparse LU factorisations (wall-free placements reuse one)
   int last_window_cells = 0;
   double factorisation_seconds = 0.0;  // wall time in window factorisations [s]
-  double solve_seconds = 0.0;          // wall time in the 2n solves of the updates [s]
+  double solve_seconds = 0.0;          // wall time in the footprint mobilities of the updates [s]
 };
 
 // Per-rod state of level 4 (owned by the caller, see ModelState): each

@@ -7,6 +7,8 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -98,6 +100,61 @@ TEST(SparseLuFactors, SelectedRowsOfSparseColumnsEqualTheDenseSolveBitForBit) {
   }
   EXPECT_THROW(lu.solve_selected({{{n, 1.0}}}, rows), std::invalid_argument);
   EXPECT_THROW(lu.solve_selected({{{0, 1.0}}}, {-1}), std::invalid_argument);
+}
+
+// S^T A^-1 B by two forward substitutions over the reaches of the sparse
+// columns (a level-4 update: unit forces on footprints, the response
+// averaged over the footprints) equals the weighted rows of the full solve
+// to round-off: on a lattice large enough that nearby columns reach a
+// fraction of the unknowns (the pruned paths) and across blocks (45
+// columns: a full block and a partial one, and 1 column).
+TEST(SparseLuFactors, BilinearOfSparseColumnsEqualsTheWeightedFullSolve) {
+  const Eigen::SparseMatrix<double> a = saddle_point(40, 13);
+  const SparseLuFactors lu(a);
+  const int n = static_cast<int>(a.rows()), nv = n / 2;
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> value(0.1, 1.0);
+  // Footprint-like columns: a 3 x 3 patch of velocity unknowns around a
+  // cell of the lattice (40 x 40), patches along a line as a rod's spheres.
+  // (This system's velocities are divergence-free along each lattice line
+  // with no inflow: zero but on the gauge's line; the left columns read the
+  // pressures, which are not.)
+  auto patch = [&](int centre_i, int centre_j, int offset) {
+    SparseLuFactors::SparseColumn column;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj)
+        column.emplace_back(offset + (centre_i + di) * 40 + centre_j + dj, value(random));
+    return column;
+  };
+  for (int columns : {1, 45}) {
+    std::vector<SparseLuFactors::SparseColumn> left, right;
+    for (int c = 0; c < columns; ++c) {
+      right.push_back(patch(5 + (c * 29) / std::max(1, columns - 1), 20 + c % 2, 0));
+      left.push_back(patch(5 + (c * 29) / std::max(1, columns - 1), 19 + c % 3, nv));
+    }
+    left.push_back({{nv + 7, 1.0}, {3, -0.5}});  // a pressure unknown too, and a 46th left column
+    Eigen::MatrixXd s = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(left.size()));
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, columns);
+    for (std::size_t c = 0; c < left.size(); ++c)
+      for (const auto& e : left[c]) s(e.first, static_cast<Eigen::Index>(c)) = e.second;
+    for (int c = 0; c < columns; ++c)
+      for (const auto& e : right[c]) b(e.first, c) = e.second;
+    const Eigen::MatrixXd full = s.transpose() * lu.solve(b);
+    const Eigen::MatrixXd m = lu.bilinear(left, right);
+    ASSERT_EQ(m.rows(), full.rows());
+    ASSERT_EQ(m.cols(), full.cols());
+    const double scale = full.cwiseAbs().maxCoeff();
+    ASSERT_GT(scale, 0.0);
+    EXPECT_LT((m - full).cwiseAbs().maxCoeff(), 1e-12 * scale) << columns << " columns";
+    // Entries far below the scale too (the pruning drops only exact zeros).
+    for (Eigen::Index i = 0; i < m.rows(); ++i)
+      for (Eigen::Index j = 0; j < m.cols(); ++j)
+        EXPECT_LE(std::abs(m(i, j) - full(i, j)), 1e-10 * std::abs(full(i, j)) + 1e-15 * scale)
+            << "entry " << i << ", " << j;
+  }
+  EXPECT_EQ(lu.bilinear({}, {{{0, 1.0}}}).size(), 0);
+  EXPECT_THROW(lu.bilinear({{{n, 1.0}}}, {{{0, 1.0}}}), std::invalid_argument);
+  EXPECT_THROW(lu.bilinear({{{0, 1.0}}}, {{{-1, 1.0}}}), std::invalid_argument);
 }
 
 TEST(SparseLuFactors, RefusesSingularAndNonSquareMatrices) {

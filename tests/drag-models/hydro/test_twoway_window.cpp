@@ -100,6 +100,53 @@ TEST(BrinkmanWindow, DisturbanceMatchesBrinkmanGreenFunction) {
     }
 }
 
+// The footprint mobility of a level-4 update (weighted_response: the
+// forward substitutions over the footprints' reaches only) is the one read
+// from the full solve (solve_at, weighted per footprint) to round-off:
+// 24 footprints along a line (48 columns, two blocks), both components.
+TEST(BrinkmanWindow, WeightedResponseEqualsTheWeightedSolveAt) {
+  const double gap = kD / 0.15, h = kD / 2.0;
+  const ChannelGeometry open(1.0, 1.0, gap, -0.5, -0.5);
+  WindowLattice lattice;
+  lattice.h = h;
+  lattice.nx = 90;
+  lattice.ny = 50;
+  lattice.x0 = lattice.y0 = 0.0;
+  const BrinkmanWindow window(open, lattice, kMu);
+  std::vector<BrinkmanWindow::NodeForces> prints;
+  std::vector<int> at_nodes, first;
+  for (int i = 0; i < 24; ++i)
+    for (int a = 0; a < 2; ++a) {
+      const Eigen::Vector2d c(10 * h + i * 2.7 * h, 24.3 * h + 0.1 * i * h);
+      BrinkmanWindow::NodeForces print;
+      double total = 0.0;
+      for (int k : window.nodes_near(c, kD, a)) {
+        const double w = 1.0 - std::pow((window.nodes()[k].position - c).norm() / kD, 2) + 0.05;
+        print.emplace_back(k, w);
+        total += w;
+      }
+      for (auto& e : print) e.second /= total;
+      first.push_back(static_cast<int>(at_nodes.size()));
+      for (const auto& e : print) at_nodes.push_back(e.first);
+      prints.push_back(print);
+    }
+  const Eigen::MatrixXd u = window.solve_at(prints, at_nodes);
+  const int m = static_cast<int>(prints.size());
+  Eigen::MatrixXd expected(m, m);
+  for (int r = 0; r < m; ++r)
+    for (int c = 0; c < m; ++c) {
+      double sum = 0.0;
+      for (std::size_t k = 0; k < prints[r].size(); ++k) sum += prints[r][k].second * u(first[r] + k, c);
+      expected(r, c) = sum;
+    }
+  const Eigen::MatrixXd got = window.weighted_response(prints, prints);
+  ASSERT_EQ(got.rows(), m);
+  ASSERT_EQ(got.cols(), m);
+  const double scale = expected.cwiseAbs().maxCoeff();
+  EXPECT_GT(scale, 0.0);
+  EXPECT_LT((got - expected).cwiseAbs().maxCoeff(), 1e-12 * scale);
+}
+
 namespace {
 std::unique_ptr<TwoWayWindowSession> level4(double beta, TwoWayWindowOptions options = {}) {
   return std::make_unique<TwoWayWindowSession>(HydrodynamicParameters{kMu, kD / beta, kD},

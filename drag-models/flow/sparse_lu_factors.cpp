@@ -28,6 +28,14 @@ SparseLuFactors::SparseLuFactors(const Eigen::SparseMatrix<double>& matrix) : n_
   a.makeCompressed();
   double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
   umfpack_di_defaults(control);
+  // The window's saddle-point matrix is unsymmetric in value and pattern
+  // (Brinkman momentum rows against continuity rows): the unsymmetric
+  // strategy with COLAMD alone. UMFPACK's default ordering (CHOLMOD: COLAMD,
+  // then METIS when the fill looks large) spent ~15 % more on factorising
+  // and gave ~7-18 % more fill (slower solves) on the pore windows of
+  // 2 300-32 000 cells (tests/benchmarks/RESULTS.md, session 13).
+  control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_UNSYMMETRIC;
+  control[UMFPACK_ORDERING] = UMFPACK_ORDERING_AMD;
   UmfpackObjects objects;
   int status = umfpack_di_symbolic(n_, n_, a.outerIndexPtr(), a.innerIndexPtr(), a.valuePtr(), &objects.symbolic,
                                    control, info);

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -26,9 +27,83 @@ NonlocalRodModel::NonlocalRodModel(const HydrodynamicParameters& p, const Confin
   film_friction_ = sphere_friction_ - obstruction_friction_;
 }
 
-void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState*) const {
+bool NonlocalRodModel::own_driving() const {
+  return near_field_.driving.blend_length != near_field_.friction.blend_length ||
+         near_field_.driving.reflection != near_field_.friction.reflection ||
+         near_field_.driving.reflection_along != near_field_.friction.reflection_along;
+}
+
+namespace {
+
+// zo a^-1 into `out` for the symmetric positive definite a (Cholesky), or
+// through a partial-pivoting LU should a pivot not be positive.
+void scaled_inverse(const Eigen::MatrixXd& a, double zo, Eigen::MatrixXd& out) {
+  Eigen::MatrixXd factor;
+  if (!cholesky_inverse(a, factor, out)) {
+    DenseLu lu;
+    Eigen::MatrixXd work = a;
+    lu.compute_in_place(work);
+    lu.inverse(out);
+  }
+  out *= zo;
+}
+
+// The rigid in-plane motion that best carries `reference` onto `now` (least
+// squares, turn about the centroids: the 2-D Kabsch solution) as the turn's
+// cosine and sine, and the largest distance [m] of a centre of `now` from
+// its carried reference place.
+double rigid_misfit(const std::vector<Eigen::Vector2d>& reference, const RodGeometry& now, double& cos_turn,
+                    double& sin_turn) {
+  const int n = static_cast<int>(reference.size());
+  Eigen::Vector2d c_ref = Eigen::Vector2d::Zero(), c_now = Eigen::Vector2d::Zero();
+  for (int i = 0; i < n; ++i) {
+    c_ref += reference[i];
+    c_now += now.positions[i].head<2>();
+  }
+  c_ref /= n;
+  c_now /= n;
+  double dot = 0.0, cross = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d a = reference[i] - c_ref, b = now.positions[i].head<2>() - c_now;
+    dot += a.dot(b);
+    cross += a.x() * b.y() - a.y() * b.x();
+  }
+  const double norm = std::hypot(dot, cross);
+  cos_turn = norm > 0.0 ? dot / norm : 1.0;
+  sin_turn = norm > 0.0 ? cross / norm : 0.0;
+  double misfit = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d a = reference[i] - c_ref;
+    const Eigen::Vector2d carried(cos_turn * a.x() - sin_turn * a.y(), sin_turn * a.x() + cos_turn * a.y());
+    misfit = std::max(misfit, (carried - (now.positions[i].head<2>() - c_now)).norm());
+  }
+  return misfit;
+}
+
+// Q_b m Q_b^T into `out`, Q_b = diag(Q, ..., Q), Q the turn (cos c, sin s):
+// each 2x2 block [a b; e f] turned on its own, written out (Eigen's
+// dynamic-matrix 2x2 block products cost ~5x more here).
+void turned(const Eigen::MatrixXd& m, double c, double s, Eigen::MatrixXd& out) {
+  const Eigen::Index size = m.rows();
+  out.resize(size, size);
+  for (Eigen::Index k = 0; k < size; k += 2) {
+    for (Eigen::Index i = 0; i < size; i += 2) {
+      const double a = m(i, k), b = m(i, k + 1), e = m(i + 1, k), f = m(i + 1, k + 1);
+      // Q [a b; e f]: rows (c a - s e, c b - s f), (s a + c e, s b + c f); then times Q^T.
+      const double qa = c * a - s * e, qb = c * b - s * f, qe = s * a + c * e, qf = s * b + c * f;
+      out(i, k) = qa * c - qb * s;
+      out(i, k + 1) = qa * s + qb * c;
+      out(i + 1, k) = qe * c - qf * s;
+      out(i + 1, k + 1) = qe * s + qf * c;
+    }
+  }
+}
+
+}  // namespace
+
+void NonlocalRodModel::solve_coupling(const RodGeometry& rod, Eigen::MatrixXd& obstruction,
+                                      Eigen::MatrixXd& driving) const {
   const int n = rod.size();
-  out.resize(n);
   const double zo = obstruction_friction_;
   // Coupling matrix I + zeta_o M of the in-plane components, M_ik = c G or,
   // within a few H, blended into the 3-D near field. z is uncoupled (its
@@ -38,12 +113,10 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
   // fills both blocks (i,k) and (k,i). The held load has its own near field
   // (NearFieldAtBeta), so its coupling matrix is built beside the friction's
   // from the same G when the two differ.
-  const bool own_driving = near_field_.driving.blend_length != near_field_.friction.blend_length ||
-                           near_field_.driving.reflection != near_field_.friction.reflection ||
-                           near_field_.driving.reflection_along != near_field_.friction.reflection_along;
+  const bool own = own_driving();
   Eigen::MatrixXd coupling = Eigen::MatrixXd::Identity(2 * n, 2 * n);
   Eigen::MatrixXd coupling_driving;
-  if (own_driving) coupling_driving = Eigen::MatrixXd::Identity(2 * n, 2 * n);
+  if (own) coupling_driving = Eigen::MatrixXd::Identity(2 * n, 2 * n);
   const double mu = parameters_.viscosity, H = parameters_.gap_height, d = parameters_.sphere_diameter;
   for (int i = 0; i < n; ++i) {
     for (int k = i + 1; k < n; ++k) {
@@ -54,7 +127,7 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
           zo * near_field_pair_mobility(depth_averaged, offset, mu, H, d, 1.0 / zo, near_field_.friction);
       coupling.block<2, 2>(2 * i, 2 * k) += g;
       coupling.block<2, 2>(2 * k, 2 * i) += g;
-      if (!own_driving) continue;
+      if (!own) continue;
       const Eigen::Matrix2d gd =
           zo * near_field_pair_mobility(depth_averaged, offset, mu, H, d, 1.0 / zo, near_field_.driving);
       coupling_driving.block<2, 2>(2 * i, 2 * k) += gd;
@@ -62,20 +135,60 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
     }
   }
   // R_o itself is an output (it enters the implicit step's matrix), so the
-  // inverse is what is wanted here; the driving reuses it. (A separate solve
-  // for the driving moved the pore benchmark's level-3 errors in their 6th
-  // digit, tests/benchmarks/RESULTS.md.) I + zeta_o M is symmetric (G and
-  // the near field are) and, R_o being a resistance, positive definite: the
+  // inverse is what is wanted here. I + zeta_o M is symmetric (G and the
+  // near field are) and, R_o being a resistance, positive definite: the
   // Cholesky inverse (common/dense_cholesky.h, ~1/2 the flops of an LU and
   // its inverse, ~1/5 of Eigen's blocked ones at this size); a partial-
-  // pivoting LU should a pivot not be positive.
-  Eigen::MatrixXd factor, inverse;
-  if (!cholesky_inverse(coupling, factor, inverse)) {
-    DenseLu lu;
-    lu.compute_in_place(coupling);
-    lu.inverse(inverse);
+  // pivoting LU should a pivot not be positive. The held load's coupling
+  // the same way (kept with the rod's state, it is reused like R_o).
+  scaled_inverse(coupling, zo, obstruction);
+  if (own)
+    scaled_inverse(coupling_driving, zo, driving);
+  else
+    driving.resize(0, 0);
+}
+
+void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out,
+                                ModelState* state) const {
+  NonlocalState* own = nullptr;
+  if (state) {
+    own = dynamic_cast<NonlocalState*>(state);
+    if (!own) throw std::invalid_argument("nonlocal: the state given is not a level-3 state (make_state())");
   }
-  inverse *= zo;  // the in-plane R_o
+  evaluate_with(rod, flow, out, own, rod.id);
+}
+
+void NonlocalRodModel::evaluate_with(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out,
+                                     NonlocalState* state, int key) const {
+  const int n = rod.size();
+  out.resize(n);
+  const double zo = obstruction_friction_;
+  Eigen::MatrixXd solved_obstruction, solved_driving, turned_obstruction, turned_driving;
+  const Eigen::MatrixXd* obstruction = &solved_obstruction;  // R_o in the plane, 2n x 2n
+  const Eigen::MatrixXd* driving = &solved_driving;          // its held-load twin (empty: R_o)
+  if (!state) {
+    solve_coupling(rod, solved_obstruction, solved_driving);
+  } else {
+    ++state->evaluations;
+    NonlocalState::Rod& kept = state->rods[key];
+    double c = 1.0, s = 0.0;
+    const bool reuse = static_cast<int>(kept.reference.size()) == n && n > 0 &&
+                       rigid_misfit(kept.reference, rod, c, s) <= kShapeTolerance * parameters_.sphere_diameter;
+    if (!reuse) {
+      ++state->solves;
+      solve_coupling(rod, kept.obstruction, kept.driving);
+      kept.reference.resize(n);
+      for (int i = 0; i < n; ++i) kept.reference[i] = rod.positions[i].head<2>();
+      obstruction = &kept.obstruction;
+      driving = &kept.driving;
+    } else {
+      turned(kept.obstruction, c, s, turned_obstruction);
+      obstruction = &turned_obstruction;
+      if (kept.driving.size() > 0) turned(kept.driving, c, s, turned_driving);
+      driving = &turned_driving;
+    }
+  }
+  const Eigen::MatrixXd& inverse = *obstruction;
   // R = zeta_f I + R_o, symmetrised: R_o = zeta_o (I + zeta_o M)^-1 in the
   // plane, zeta_o along z.
   Eigen::MatrixXd& resistance = out.coupled_resistance;
@@ -94,11 +207,9 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
   for (int i = 0; i < n; ++i) u.segment<2>(2 * i) = out.driving_force[i].head<2>();
   // In-plane driving c R_o u, or, when the held load has its own near field,
   // c zo (I + zo M^D)^-1 u.
-  const Eigen::VectorXd driving =
-      own_driving ? Eigen::VectorXd((kMidplaneFactor * zo) * coupling_driving.partialPivLu().solve(u))
-                  : Eigen::VectorXd(kMidplaneFactor * (inverse * u));
+  const Eigen::VectorXd in_plane = kMidplaneFactor * ((driving->size() > 0 ? *driving : inverse) * u);
   for (int i = 0; i < n; ++i) {
-    out.driving_force[i] << driving.segment<2>(2 * i), kMidplaneFactor * (zo * out.driving_force[i].z());
+    out.driving_force[i] << in_plane.segment<2>(2 * i), kMidplaneFactor * (zo * out.driving_force[i].z());
     out.resistance[i] = resistance.block<3, 3>(3 * i, 3 * i);
   }
   apply_wall_proximity(rod, flow, out);
@@ -110,7 +221,74 @@ void NonlocalRodModel::evaluate_rods(const std::vector<RodGeometry>& rods, const
     evaluate(rods.front(), flow, out, state);
     return;
   }
-  evaluate(joined_rods(rods, rods.empty() ? 0 : rods.front().id), flow, out, state);
+  NonlocalState* own = nullptr;
+  if (state) {
+    own = dynamic_cast<NonlocalState*>(state);
+    if (!own) throw std::invalid_argument("nonlocal: the state given is not a level-3 state (make_state())");
+  }
+  // Rods evaluated together keep their coupling under a key no single rod
+  // has (ids are >= 0): that of the smallest id, negated.
+  int smallest = rods.front().id;
+  for (const RodGeometry& r : rods) smallest = std::min(smallest, r.id);
+  evaluate_with(joined_rods(rods, rods.front().id), flow, out, own, -(1 + smallest));
+}
+
+std::string NonlocalState::work_summary() const {
+  char line[200];
+  std::snprintf(line, sizeof(line), "nonlocal: %ld evaluations, %ld coupling solves, %ld reused turned with the rod",
+                evaluations, solves, evaluations - solves);
+  return line;
+}
+
+std::unique_ptr<ModelState> NonlocalRodModel::make_state() const { return std::make_unique<NonlocalState>(); }
+
+namespace {
+constexpr double kNonlocalStateTag = 3.0;  // first number: the model level that wrote the data
+}
+
+std::vector<double> NonlocalRodModel::save_state(const ModelState& base) const {
+  const auto& state = dynamic_cast<const NonlocalState&>(base);
+  std::vector<double> out{kNonlocalStateTag, static_cast<double>(state.evaluations),
+                          static_cast<double>(state.solves), static_cast<double>(state.rods.size())};
+  for (const auto& entry : state.rods) {
+    const NonlocalState::Rod& rod = entry.second;
+    out.insert(out.end(), {static_cast<double>(entry.first), static_cast<double>(rod.reference.size()),
+                           rod.driving.size() > 0 ? 1.0 : 0.0});
+    for (const auto& x : rod.reference) out.insert(out.end(), {x.x(), x.y()});
+    out.insert(out.end(), rod.obstruction.data(), rod.obstruction.data() + rod.obstruction.size());
+    out.insert(out.end(), rod.driving.data(), rod.driving.data() + rod.driving.size());
+  }
+  return out;
+}
+
+void NonlocalRodModel::restore_state(ModelState& base, const std::vector<double>& data, const BackgroundFlow&) const {
+  auto& state = dynamic_cast<NonlocalState&>(base);
+  std::size_t at = 0;
+  const auto next = [&]() {
+    if (at >= data.size()) throw std::invalid_argument("nonlocal: restart data ends early");
+    return data[at++];
+  };
+  if (next() != kNonlocalStateTag) throw std::invalid_argument("nonlocal: restart data from another model");
+  state.rods.clear();
+  state.evaluations = static_cast<long>(next());
+  state.solves = static_cast<long>(next());
+  for (long count = static_cast<long>(next()); count > 0; --count) {
+    NonlocalState::Rod& rod = state.rods[static_cast<int>(next())];
+    const double size = next();
+    if (!(size >= 0.0 && size <= 1e6)) throw std::invalid_argument("nonlocal: restart data: bad sphere count");
+    const int n = static_cast<int>(size);
+    const bool has_driving = next() != 0.0;
+    rod.reference.resize(n);
+    for (auto& x : rod.reference) {
+      x.x() = next();
+      x.y() = next();
+    }
+    rod.obstruction.resize(2 * n, 2 * n);
+    for (Eigen::Index k = 0; k < rod.obstruction.size(); ++k) rod.obstruction.data()[k] = next();
+    rod.driving.resize(has_driving ? 2 * n : 0, has_driving ? 2 * n : 0);
+    for (Eigen::Index k = 0; k < rod.driving.size(); ++k) rod.driving.data()[k] = next();
+  }
+  if (at != data.size()) throw std::invalid_argument("nonlocal: restart data longer than written");
 }
 
 double depth_averaged_interaction_reach(double gap_height, double viscosity, double obstruction_friction,

@@ -29,7 +29,30 @@
 #include "hydro/local_models.h"
 #include "hydro/near_field_coupling.h"
 
+#include <map>
+
 namespace hsrod {
+
+// What level 3 keeps between evaluations (ModelState; owned by the caller,
+// e.g. RodHydrodynamics): per rod, the in-plane coupling inverses solved at
+// the rod's shape of its last full evaluation. The pair couplings depend on
+// the spheres' in-plane offsets only, through tensors that turn with them
+// (G(Q r) = Q G(r) Q^T, and so the near field), so while the rod moves as a
+// rigid body in the plane its inverses are the stored ones turned:
+// Q_b R_o Q_b^T, Q_b = diag(Q, ..., Q). They are solved afresh once a centre
+// is farther than NonlocalRodModel::kShapeTolerance from its rigidly carried
+// place (the rod bent or stretched since).
+struct NonlocalState : ModelState {
+  struct Rod {
+    std::vector<Eigen::Vector2d> reference;  // in-plane centres at the last full evaluation [m]
+    Eigen::MatrixXd obstruction;             // zeta_o (I + zeta_o M)^-1 there, 2n x 2n [N s/m]
+    Eigen::MatrixXd driving;                 // zeta_o (I + zeta_o M^D)^-1 [N s/m]; empty: the same as obstruction
+  };
+  std::map<int, Rod> rods;  // by RodGeometry::id (joined rods: a key of their own)
+  long evaluations = 0;     // calls with this state
+  long solves = 0;          // of which solved the coupling afresh
+  std::string work_summary() const override;
+};
 
 // Sphere-centre distance [m] beyond which two spheres' coupling through the
 // depth-averaged Brinkman flow, c zeta_o |G|, is below `tolerance` of a
@@ -47,7 +70,20 @@ class NonlocalRodModel : public LocalDragBase {
   std::string name() const override { return "nonlocal"; }
   int level() const override { return 3; }
   using HydrodynamicModel::evaluate;
+  // With a state (make_state()), the coupling of a rod that has moved
+  // rigidly since its last solve is reused turned (NonlocalState); without
+  // one, solved at every call.
   void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState* state) const override;
+  std::unique_ptr<ModelState> make_state() const override;
+  std::vector<double> save_state(const ModelState& state) const override;
+  void restore_state(ModelState& state, const std::vector<double>& data, const BackgroundFlow& flow) const override;
+  // Largest distance [m, as a fraction of d] of a sphere centre from its
+  // place carried rigidly from the last solve up to which the stored
+  // coupling is reused. A centre off by delta changes a pair coupling at
+  // distance r >= d by ~delta / r of itself: 1e-4 d keeps the loads within
+  // ~1e-4 of the solved ones (tests/drag-models/hydro/test_nonlocal_model.cpp
+  // measures it; tests/benchmarks/RESULTS.md the passage's change).
+  static constexpr double kShapeTolerance = 1e-4;  // [-], of the sphere diameter
   // Several rods: the same Green's function between the spheres of all of
   // them (the obstruction of one rod shields or drives the others), one
   // dense solve over all their spheres. Level 3 itself does not tell
@@ -71,6 +107,13 @@ class NonlocalRodModel : public LocalDragBase {
   const NearFieldAtBeta& near_field() const { return near_field_; }
 
  private:
+  // zeta_o (I + zeta_o M)^-1 and, when the held load has its own near field,
+  // zeta_o (I + zeta_o M^D)^-1 (else `driving` is left empty), 2n x 2n.
+  void solve_coupling(const RodGeometry& rod, Eigen::MatrixXd& obstruction, Eigen::MatrixXd& driving) const;
+  bool own_driving() const;
+  void evaluate_with(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, NonlocalState* state,
+                     int key) const;
+
   double film_friction_;
   double obstruction_friction_;
   NearFieldAtBeta near_field_;

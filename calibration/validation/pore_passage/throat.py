@@ -110,7 +110,7 @@ def rigid(case):
 
 
 def trajectory_rates(plan):
-    rows = list(csv.DictReader(open(os.path.join(HERE, "resolved.csv"))))
+    rows = list(csv.DictReader(open(os.path.join(HERE, "resolved_dt10.csv"))))
     t = [float(r["t"]) for r in rows]
     out = {}
     for s in plan["series"]:

@@ -10,7 +10,7 @@ Copies CASE/postProcessing/rodIbFoam/rodMeasures.csv to
 coupled_dt5_rodMeasures_raw.csv (beside this file; a second case, the same at
 2.5 us to 1.5 ms: coupled_dt2.5_rodMeasures_raw.csv) and prints, at equal
 rod-centre x, lateral / W and the paper angle of the recorded run
-(resolved.csv, step 10 us) and of the 5 us run, and both runs' smoothed V_y / U
+(resolved_dt10.csv, step 10 us: the record before session 13) and of the 5 us run, and both runs' smoothed V_y / U
 (2-point average, local quadratic fit over +-40 us in time) at the throat
 configurations of throat.py; the rigid steady value (throat_rigid.csv, finest
 resolved mesh) beside them.
@@ -53,7 +53,7 @@ def main(argv):
     case = argv[1]
     raw = os.path.join(case, "postProcessing", "rodIbFoam", "rodMeasures.csv")
     shutil.copy(raw, os.path.join(HERE, "coupled_dt5_rodMeasures_raw.csv"))
-    ref = read(os.path.join(HERE, "resolved.csv"))
+    ref = read(os.path.join(HERE, "resolved_dt10.csv"))
     new = read(raw)
     fine = None
     if len(argv) > 2:

@@ -51,7 +51,7 @@ D, U, MU, N = 3e-6, 0.01, 1e-3, 4
 
 
 def smooth_path():
-    rows = list(csv.DictReader(open(os.path.join(HERE, "resolved.csv"))))
+    rows = list(csv.DictReader(open(os.path.join(HERE, "resolved_dt10.csv"))))
     t = np.array([float(r["t"]) for r in rows])
     v = np.array([[float(r["x_com"]), float(r["y_com"]), float(r["angle_deg"])] for r in rows])
     tm, vm = 0.5 * (t[1:] + t[:-1]), 0.5 * (v[1:] + v[:-1])

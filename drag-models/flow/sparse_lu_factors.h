@@ -60,7 +60,9 @@ class SparseLuFactors {
   std::vector<int> pivot_of_row_;        // inverse of row_order_: pivot row k of original row i
   std::vector<int> pivot_of_column_;     // inverse of column_order_
   // Patterns of L by columns and of U by rows (strictly off-diagonal), for
-  // the reach of a sparse right-hand side (bilinear).
+  // the reach of a sparse right-hand side (bilinear): 4 bytes per factor
+  // entry beside the factors' 12 (a level-4 run of a 600 um rod: peak
+  // memory 448 -> 565 MB with the blocks' stored reaches).
   std::vector<int> lt_start_, lt_row_;   // column j of L: the rows k > j with L(k, j) != 0
   std::vector<int> ut_start_, ut_column_;  // row i of U: the columns j > i with U(i, j) != 0
   // Forward substitution of one block (bilinear): `reach` gets the pivot

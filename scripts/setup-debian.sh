@@ -8,6 +8,11 @@ packages=(
   liggghts libliggghts-dev
   libopenmpi-dev openmpi-bin
   libeigen3-dev libsuitesparse-dev
+  # OpenBLAS (single-threaded: MPI ranks and sweep workers share the cores)
+  # as the system's libblas.so.3: UMFPACK's dense kernels in level 4's window
+  # factorisations run ~2x faster than on the reference BLAS (level 4's pore
+  # passage 0.85 -> 0.75 s, tests/benchmarks/RESULTS.md, session 13)
+  libopenblas0-serial
   libgtest-dev googletest libbenchmark-dev
   libcli11-dev nlohmann-json3-dev
   python3-numpy python3-matplotlib python3-vtk9

@@ -1,7 +1,7 @@
 // Restarts of the implicit reduced model: a run split by write_restart /
 // read_restart continues the unbroken run. What must survive: the bonds'
-// rest states and orientations (fix rod/bonds, per atom), the level-4
-// windows and stored resistances (fix hele_shaw/drag's global restart data,
+// rest states and orientations (fix rod/bonds, per atom), level 3's kept
+// coupling, the level-4 windows and stored resistances (fix hele_shaw/drag's global restart data,
 // RodHydrodynamics::save_state) and the wall-contact records (fix
 // rod/implicit); the implicit step's per-rod workspace is rebuilt, which
 // must not change the step.
@@ -80,6 +80,15 @@ double restart_difference(const std::string &model, const StepSettings &step = {
 TEST(ImplicitRestart, LevelTwoRunContinuesIdentically) {
   const double worst = restart_difference("local");
   std::printf("level 2 restart: largest position difference %.3g m\n", worst);
+  EXPECT_LT(worst, 1e-12 * kD);
+}
+
+// Level 3 keeps its coupling solve between steps while the rod moves
+// rigidly (NonlocalState): the kept inverses travel in the restart file, so
+// the restarted run turns the same stored coupling as the unbroken one.
+TEST(ImplicitRestart, LevelThreeRunContinuesIdenticallyWithItsKeptCoupling) {
+  const double worst = restart_difference("nonlocal");
+  std::printf("level 3 restart: largest position difference %.3g m\n", worst);
   EXPECT_LT(worst, 1e-12 * kD);
 }
 

@@ -74,36 +74,40 @@ TEST(NonlocalReuse, RigidlyMovedRodGetsTheTurnedCouplingOfAFreshSolve) {
   EXPECT_GT(relative_difference(first, fresh), 0.05);
 }
 
-TEST(NonlocalReuse, RodBentBeyondTheToleranceIsSolvedAfresh) {
+// The rod evaluated with a state, then again with its last sphere moved
+// across by `shift` kShapeTolerance diameters; beside it a fresh solve of
+// the moved rod and the state's count of solves.
+struct BentEndEvaluation {
+  RodDrag kept, fresh;
+  long solves = 0;
+};
+
+BentEndEvaluation evaluate_with_bent_end(double shift) {
   const NonlocalRodModel m = model();
   const hsrod_test::UniformStream stream(kGap);
   auto state = m.make_state();
-  auto& kept = dynamic_cast<NonlocalState&>(*state);
-  RodDrag drag, fresh;
-  m.evaluate(bent_rod(), stream, drag, state.get());
+  BentEndEvaluation out;
+  m.evaluate(bent_rod(), stream, out.kept, state.get());
   RodGeometry bent = bent_rod();
-  bent.positions[9].y() += 3.0 * NonlocalRodModel::kShapeTolerance * kDiameter;
-  m.evaluate(bent, stream, drag, state.get());
-  m.evaluate(bent, stream, fresh);
-  EXPECT_EQ(kept.solves, 2);
-  EXPECT_LT(relative_difference(drag, fresh), 1e-12);
+  bent.positions[9].y() += shift * NonlocalRodModel::kShapeTolerance * kDiameter;
+  m.evaluate(bent, stream, out.kept, state.get());
+  m.evaluate(bent, stream, out.fresh);
+  out.solves = dynamic_cast<NonlocalState&>(*state).solves;
+  return out;
+}
+
+TEST(NonlocalReuse, RodBentBeyondTheToleranceIsSolvedAfresh) {
+  const BentEndEvaluation e = evaluate_with_bent_end(3.0);
+  EXPECT_EQ(e.solves, 2);
+  EXPECT_LT(relative_difference(e.kept, e.fresh), 1e-12);
 }
 
 // Below the tolerance the stored coupling is reused: the loads differ from
 // a fresh solve by about the centres' misfit over their spacing, ~1e-4 here.
 TEST(NonlocalReuse, RodBentWithinTheToleranceKeepsTheLoadsWithinIt) {
-  const NonlocalRodModel m = model();
-  const hsrod_test::UniformStream stream(kGap);
-  auto state = m.make_state();
-  auto& kept = dynamic_cast<NonlocalState&>(*state);
-  RodDrag drag, fresh;
-  m.evaluate(bent_rod(), stream, drag, state.get());
-  RodGeometry bent = bent_rod();
-  bent.positions[9].y() += 0.8 * NonlocalRodModel::kShapeTolerance * kDiameter;
-  m.evaluate(bent, stream, drag, state.get());
-  m.evaluate(bent, stream, fresh);
-  EXPECT_EQ(kept.solves, 1);
-  const double difference = relative_difference(drag, fresh);
+  const BentEndEvaluation e = evaluate_with_bent_end(0.8);
+  EXPECT_EQ(e.solves, 1);
+  const double difference = relative_difference(e.kept, e.fresh);
   EXPECT_GT(difference, 1e-9);  // reused, not solved: not equal
   EXPECT_LT(difference, NonlocalRodModel::kShapeTolerance);
 }

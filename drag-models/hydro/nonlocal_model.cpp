@@ -163,7 +163,7 @@ void NonlocalRodModel::evaluate_with(const RodGeometry& rod, const BackgroundFlo
   const int n = rod.size();
   out.resize(n);
   const double zo = obstruction_friction_;
-  Eigen::MatrixXd solved_obstruction, solved_driving, turned_obstruction, turned_driving;
+  Eigen::MatrixXd solved_obstruction, solved_driving;
   const Eigen::MatrixXd* obstruction = &solved_obstruction;  // R_o in the plane, 2n x 2n
   const Eigen::MatrixXd* driving = &solved_driving;          // its held-load twin (empty: R_o)
   if (!state) {
@@ -182,10 +182,13 @@ void NonlocalRodModel::evaluate_with(const RodGeometry& rod, const BackgroundFlo
       obstruction = &kept.obstruction;
       driving = &kept.driving;
     } else {
-      turned(kept.obstruction, c, s, turned_obstruction);
-      obstruction = &turned_obstruction;
-      if (kept.driving.size() > 0) turned(kept.driving, c, s, turned_driving);
-      driving = &turned_driving;
+      turned(kept.obstruction, c, s, kept.turned_obstruction);
+      obstruction = &kept.turned_obstruction;
+      driving = &kept.driving;  // empty: the held load uses R_o
+      if (kept.driving.size() > 0) {
+        turned(kept.driving, c, s, kept.turned_driving);
+        driving = &kept.turned_driving;
+      }
     }
   }
   const Eigen::MatrixXd& inverse = *obstruction;

@@ -47,6 +47,9 @@ struct NonlocalState : ModelState {
     std::vector<Eigen::Vector2d> reference;  // in-plane centres at the last full evaluation [m]
     Eigen::MatrixXd obstruction;             // zeta_o (I + zeta_o M)^-1 there, 2n x 2n [N s/m]
     Eigen::MatrixXd driving;                 // zeta_o (I + zeta_o M^D)^-1 [N s/m]; empty: the same as obstruction
+    // The two turned to the rod's present orientation (scratch of the
+    // evaluation, kept so that a reused step allocates nothing; not saved).
+    Eigen::MatrixXd turned_obstruction, turned_driving;  // [N s/m]
   };
   std::map<int, Rod> rods;  // by RodGeometry::id (joined rods: a key of their own)
   long evaluations = 0;     // calls with this state

@@ -22,7 +22,10 @@ for spec in args:
     x = d["x_m"] * 1e6
     k = int(np.argmax(d["deflection"]))
     lateral_pore = float(np.interp(300.0, x, d["lateral_over_W"]))
-    rows.append(f"{label or path},{d['angle_deg'][0]:.2f},{d['angle_deg'].max():.2f},{d['angle_deg'][-1]:.2f},"
+    name = label or path
+    if "," in name or '"' in name:  # labels such as "alpha = 10 deg, 15 kPa": one quoted CSV field
+        name = '"' + name.replace('"', '""') + '"'
+    rows.append(f"{name},{d['angle_deg'][0]:.2f},{d['angle_deg'].max():.2f},{d['angle_deg'][-1]:.2f},"
                 f"{d['deflection'].max():.4f},{x[k]:.0f},{lateral_pore:.4f},{d['lateral_over_W'][-1]:.4f},"
                 f"{d['vx_over_U'].max():.2f}")
 print("\n".join(rows))

@@ -2,18 +2,21 @@
 """Numerical uncertainty of the resolved pore passage (resolved.csv) from its
 recorded step and mesh series: the paper's three measures (passage time,
 rotation in the pore, lateral displacement / W after the pore;
-passage_measures.summary) of each recorded run, and for each measure the
-larger change over the last halving of the CFD step and over the mesh
-refinement. Writes resolved_uncertainty.json (read by
-tests/benchmarks/time_vs_error.py and the pore-passage test).
+passage_measures.summary) of each recorded run, the change of each measure
+over each refinement of the series (a halving of the CFD step, a finer mesh)
+and, as the reference's uncertainty, the root sum of squares of those
+changes (independent error sources). Writes resolved_uncertainty.json (read by
+tests/benchmarks/time_vs_error.py and tests/liggghts/pore_passage_vs_resolved.py).
 
     /usr/bin/python3 calibration/validation/pore_passage/resolved_uncertainty.py
 
-Runs of the series (raw rodMeasures.csv of each coupled run, beside this file):
-  resolved_rodMeasures_raw.csv     the reference: 6 cells per d, CFD step 2.5 us
-  coupled_dt5_rodMeasures_raw.csv  the same at a 5 us step (step series)
-  coupled_h8_rodMeasures_raw.csv   the same at 8 cells per d (mesh series;
-                                   used once it is recorded)
+Runs of the series (raw rodMeasures.csv of each coupled run, beside this file;
+a refinement is used when both of its runs are recorded):
+  resolved_rodMeasures_raw.csv     the reference (resolved.csv)
+  coupled_h6_rodMeasures_raw.csv   6 cells per d, CFD step 2.5 us
+  coupled_dt5_rodMeasures_raw.csv  6 cells per d, CFD step 5 us
+The reference is the finest run: 8 cells per d at 2.5 us once recorded
+(resolved_run.json names it), else the 6-cells run itself.
 """
 import json
 import os
@@ -24,9 +27,11 @@ sys.path.insert(0, HERE)
 import passage_measures as pm  # noqa: E402
 
 MEASURES = ("t_pass", "rotation", "lateral_after", "peak_angle_deg")
-SERIES = (("reference (6 cells per d, dt 2.5 us)", "resolved_rodMeasures_raw.csv"),
-          ("dt 5 us (6 cells per d)", "coupled_dt5_rodMeasures_raw.csv"),
-          ("8 cells per d (dt 2.5 us)", "coupled_h8_rodMeasures_raw.csv"))
+# (finer run, coarser run, what the refinement is); the first run of the
+# first pair whose files exist is the reference's own record.
+REFINEMENTS = (("resolved_rodMeasures_raw.csv", "coupled_h6_rodMeasures_raw.csv", "mesh 6 -> 8 cells per d"),
+               ("coupled_h6_rodMeasures_raw.csv", "coupled_dt5_rodMeasures_raw.csv", "CFD step 5 -> 2.5 us"),
+               ("resolved_rodMeasures_raw.csv", "coupled_dt5_rodMeasures_raw.csv", "CFD step 5 -> 2.5 us"))
 
 
 def measures(path, sc):
@@ -37,23 +42,27 @@ def measures(path, sc):
 
 def main():
     sc = pm.scene()
-    runs = {}
-    for name, f in SERIES:
-        path = os.path.join(HERE, f)
-        if os.path.exists(path):
-            runs[name] = measures(path, sc)
-    ref = runs[SERIES[0][0]]
-    others = [n for n, _ in SERIES[1:] if n in runs]
-    change = {k: max((runs[n][k] - ref[k] for n in others), key=abs) for k in MEASURES}
-    out = {"what": "largest change against " + " and ".join(others),
-           "runs": runs, "change": change}
+    runs, changes, used = {}, {}, set()
+    for fine, coarse, what in REFINEMENTS:
+        if what in used or not all(os.path.exists(os.path.join(HERE, f)) for f in (fine, coarse)):
+            continue
+        used.add(what)
+        for f in (fine, coarse):
+            runs.setdefault(f, measures(os.path.join(HERE, f), sc))
+        changes[what] = {k: runs[fine][k] - runs[coarse][k] for k in MEASURES}
+    rss = {k: sum(c[k] ** 2 for c in changes.values()) ** 0.5 for k in MEASURES}
+    out = {"what": "root sum of squares of the changes over " + ", ".join(changes), "runs": runs,
+           "changes": changes, "uncertainty": rss}
     with open(os.path.join(HERE, "resolved_uncertainty.json"), "w") as f:
         json.dump(out, f, indent=1)
     for n, m in runs.items():
-        print("%-38s t_pass %.4f ms, rotation %.2f deg, lateral after %+.4f W" % (
+        print("%-34s t_pass %.4f ms, rotation %.2f deg, lateral after %+.4f W" % (
             n, m["t_pass"] * 1e3, m["rotation"], m["lateral_after"]))
+    for what, c in changes.items():
+        print("change over %-24s t_pass %+.4f ms, rotation %+.2f deg, lateral %+.4f W" % (
+            what + ":", c["t_pass"] * 1e3, c["rotation"], c["lateral_after"]))
     print("uncertainty (%s): t_pass %.4f ms, rotation %.2f deg, lateral %.4f W" % (
-        out["what"], abs(change["t_pass"]) * 1e3, abs(change["rotation"]), abs(change["lateral_after"])))
+        out["what"], rss["t_pass"] * 1e3, rss["rotation"], rss["lateral_after"]))
 
 
 if __name__ == "__main__":

@@ -14,8 +14,11 @@ the velocity over the column of cells within h_probe/2 of each point in x
 and y (volume weighted), at the points x = 20.5 .. 71.5 um, y = 11 .. 25 um
 (1 um apart; the refined band, 2 H behind the inlet plug, where the rod
 travels). Written to WORK_DIR/empty_channel_h<h>.csv; the test's data file
-is that of the finest mesh, copied to tests/liggghts/data/.
-numpy (Debian).
+is that of the finest mesh with the change from the coarser one (du_mesh):
+
+    empty_channel_flow.py --combine FINE.csv COARSE.csv tests/liggghts/data/pore_passage_empty_channel_resolved.csv
+
+(the recorded file: base meshes 0.75 and 1 um). numpy (Debian).
 """
 import argparse
 import json
@@ -46,7 +49,35 @@ def points():
     return [(x * 1e-6 + 0.5e-6, y * 1e-6) for x in range(20, 72) for y in range(11, 26)]
 
 
+def read_csv(path):
+    with open(path) as f:
+        lines = f.readlines()
+    head = [l for l in lines if l.startswith("#")]
+    rows = [l.strip().split(",") for l in lines if not l.startswith("#")]
+    return head, [dict(zip(rows[0], map(float, r))) for r in rows[1:]]
+
+
+def combine(fine_path, coarse_path, out_path):
+    """The fine mesh's points with du_mesh = |u_fine - u_coarse| / |u_fine|."""
+    head, fine = read_csv(fine_path)
+    coarse_head, coarse = read_csv(coarse_path)
+    with open(out_path, "w") as f:
+        f.writelines(head)
+        f.write("# du_mesh: |u(fine) - u(coarse)| / |u(fine)|, the change of the gap average from the coarser\n"
+                "# base mesh (%s) to this one: the resolved flow's mesh uncertainty.\n" % os.path.basename(coarse_path))
+        f.writelines("# coarser mesh:" + l[1:] for l in coarse_head if "base mesh" in l or "cells" in l)
+        f.write("x_m,y_m,ux_m_s,uy_m_s,du_mesh\n")
+        for a, b in zip(fine, coarse):
+            if a["x_m"] != b["x_m"] or a["y_m"] != b["y_m"]:
+                sys.exit("empty_channel_flow: the two files' points differ")
+            du = np.hypot(a["ux_m_s"] - b["ux_m_s"], a["uy_m_s"] - b["uy_m_s"]) / np.hypot(a["ux_m_s"], a["uy_m_s"])
+            f.write("%.9g,%.9g,%.9g,%.9g,%.3g\n" % (a["x_m"], a["y_m"], a["ux_m_s"], a["uy_m_s"], du))
+    print("wrote", out_path)
+
+
 def main():
+    if len(sys.argv) == 5 and sys.argv[1] == "--combine":
+        return combine(*sys.argv[2:])
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("build")
     ap.add_argument("work")

@@ -198,17 +198,11 @@ PASSAGE_MEASURES = (("t_pass", "passage time"), ("rotation", "rotation in the po
 PASSAGE_UNITS = {"t_pass": (1e3, "%.3f ms"), "rotation": (1.0, "%.2f deg"), "lateral_after": (1.0, "%+.4f W")}
 
 
-def passage_summary(pm, rows, sc):
-    s = pm.summary(rows, sc)
-    s["rotation"] = s["peak_angle_deg"] + (90.0 + sc["rod"]["angle_deg"])  # minus the paper's initial angle
-    return s
-
-
 def coupled_passage(build, runs, levels):
     sys.path.insert(0, PASSAGE)
     import passage_measures as pm
     sc = pm.scene()
-    ref = passage_summary(pm, pm.read_run(os.path.join(PASSAGE, "resolved.csv")), sc)
+    ref = pm.summary(pm.read_run(os.path.join(PASSAGE, "resolved.csv")), sc)
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         env = dict(os.environ, HSROD_CACHE_DIR=os.path.join(tmp, "cache"))
@@ -224,7 +218,7 @@ def coupled_passage(build, runs, levels):
                     sys.exit("time_vs_error: in.passage %s failed:\n%s" % (model, r.stdout[-2000:] + r.stderr[-2000:]))
                 if k:
                     times.append(child_cpu() - c0)
-            got = passage_summary(pm, pm.read_run(out), sc)
+            got = pm.summary(pm.read_run(out), sc)
             errs = {k: got[k] / ref[k] - 1 for k, _ in PASSAGE_MEASURES}
             rows.append({"scene": "coupled passage", "level": level, "model": model,
                          "cpu_s": statistics.median(times), "error": max(abs(e) for e in errs.values()),

@@ -93,6 +93,9 @@ def summary(rows, sc=None):
         "lateral_after": interp([r["x_com"] for r in m], [r["lateral_over_W"] for r in m], x_after),
         "angle_after": interp([r["x_com"] for r in m], [r["angle_deg"] for r in m], x_after),
         "x_after": x_after,
+        # rotation in the pore: peak angle minus the paper's initial angle
+        # (create_rod's lab angle a is the paper's -(90 + a))
+        "rotation": peak["angle_deg"] + (90.0 + sc["rod"]["angle_deg"]),
         "x_in": x_in,
         "x_out": x_out,
     }

@@ -36,7 +36,6 @@ REFINEMENTS = (("resolved_rodMeasures_raw.csv", "coupled_h6_rodMeasures_raw.csv"
 
 def measures(path, sc):
     s = pm.summary(pm.read_run(path), sc)
-    s["rotation"] = s["peak_angle_deg"] + (90.0 + sc["rod"]["angle_deg"])  # minus the paper's initial angle
     return {k: s[k] for k in MEASURES}
 
 

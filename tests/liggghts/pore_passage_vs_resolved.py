@@ -11,18 +11,22 @@ measures with the recorded coupled rodIbFoam + LIGGGHTS run (resolved.csv):
   - lateral displacement / W after the pore (rod centre at pore centre + 2 R).
 
 Tolerances, from the uncertainty of the resolved run (README.md beside the
-run): 3 % of the resolved value, the mesh uncertainty of rodIbFoam's rod
-driving by its own record (velocities, hence times, rotation rates and
-drift, scale with it; the campaign's change of a rod's free velocity from
-6 to 8 cells per diameter is 0.25 %), plus the resolved run's own sampling
-noise (the interval-to-interval wobble of the measure from the exchange's
-oscillatory root, measured in the record). Not widened to make a level pass.
+run): the larger of 3 % of the resolved value (the mesh uncertainty of
+rodIbFoam's rod driving by its own record; velocities, hence times, rotation
+rates and drift, scale with it) and the reference's measured numerical
+uncertainty (resolved_uncertainty.json: root sum of squares of its changes
+over a mesh and a step refinement; it is what bounds the small lateral
+drift, a difference of two loads of ~0.9 U each), plus the resolved run's
+own sampling noise (the interval-to-interval wobble of the measure from the
+exchange's oscillatory root, measured in the record). Not widened to make a
+level pass.
 
 Usage: pore_passage_vs_resolved.py HSROD_BINARY [--only-passage-time]
 
 --only-passage-time checks the first measure alone (the part the default
 level meets today; the whole check is a disabled test until the drift is right).
 """
+import json
 import os
 import subprocess
 import sys
@@ -61,13 +65,16 @@ def main():
     a0 = -(90.0 + sc["rod"]["angle_deg"])  # the paper's initial angle (create_rod convention)
     s_ref, s = pm.summary(ref, sc), pm.summary(run, sc)
     rot_ref, rot = s_ref["peak_angle_deg"] - a0, s["peak_angle_deg"] - a0
+    with open(os.path.join(PASSAGE, "resolved_uncertainty.json")) as f:
+        measured = json.load(f)["uncertainty"]  # t_pass [s], rotation [deg], lateral_after [-]
     checks = [
         ("passage time entry -> exit [ms]", s["t_pass"] * 1e3, s_ref["t_pass"] * 1e3,
-         MESH_UNCERTAINTY * s_ref["t_pass"] * 1e3),
+         max(MESH_UNCERTAINTY * s_ref["t_pass"], measured["t_pass"]) * 1e3),
         ("rotation in the pore, peak angle - initial [deg]", rot, rot_ref,
-         MESH_UNCERTAINTY * abs(rot_ref) + wobble(ref, "angle_deg")),
+         max(MESH_UNCERTAINTY * abs(rot_ref), measured["rotation"]) + wobble(ref, "angle_deg")),
         ("lateral displacement / W after the pore", s["lateral_after"], s_ref["lateral_after"],
-         MESH_UNCERTAINTY * abs(s_ref["lateral_after"]) + wobble(ref, "lateral_over_W")),
+         max(MESH_UNCERTAINTY * abs(s_ref["lateral_after"]), measured["lateral_after"])
+         + wobble(ref, "lateral_over_W")),
     ]
     if "--only-passage-time" in sys.argv[2:]:
         checks = checks[:1]

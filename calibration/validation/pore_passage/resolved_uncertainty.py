@@ -15,8 +15,12 @@ a refinement is used when both of its runs are recorded):
   resolved_rodMeasures_raw.csv     the reference (resolved.csv)
   coupled_h6_rodMeasures_raw.csv   6 cells per d, CFD step 2.5 us
   coupled_dt5_rodMeasures_raw.csv  6 cells per d, CFD step 5 us
+  coupled_dt1.25_rodMeasures_raw.csv  6 cells per d, CFD step 1.25 us (session 15)
 The reference is the finest run: 8 cells per d at 2.5 us once recorded
-(resolved_run.json names it), else the 6-cells run itself.
+(resolved_run.json names it), else the 6-cells run itself. One change per
+error source: the step error of the reference's 2.5 us is the change from
+2.5 to 1.25 us once that run is recorded (the error of a first-order step
+is about the change over its own halving), else the change from 5 to 2.5 us.
 """
 import json
 import os
@@ -27,11 +31,14 @@ sys.path.insert(0, HERE)
 import passage_measures as pm  # noqa: E402
 
 MEASURES = ("t_pass", "rotation", "lateral_after", "peak_angle_deg")
-# (finer run, coarser run, what the refinement is); the first run of the
-# first pair whose files exist is the reference's own record.
-REFINEMENTS = (("resolved_rodMeasures_raw.csv", "coupled_h6_rodMeasures_raw.csv", "mesh 6 -> 8 cells per d"),
-               ("coupled_h6_rodMeasures_raw.csv", "coupled_dt5_rodMeasures_raw.csv", "CFD step 5 -> 2.5 us"),
-               ("resolved_rodMeasures_raw.csv", "coupled_dt5_rodMeasures_raw.csv", "CFD step 5 -> 2.5 us"))
+# (finer run, coarser run, what the refinement is, error source); the first
+# pair of each source whose files exist is used; the first run of the first
+# pair is the reference's own record.
+REFINEMENTS = (("resolved_rodMeasures_raw.csv", "coupled_h6_rodMeasures_raw.csv", "mesh 6 -> 8 cells per d", "mesh"),
+               ("coupled_dt1.25_rodMeasures_raw.csv", "coupled_h6_rodMeasures_raw.csv", "CFD step 2.5 -> 1.25 us",
+                "step"),
+               ("coupled_h6_rodMeasures_raw.csv", "coupled_dt5_rodMeasures_raw.csv", "CFD step 5 -> 2.5 us", "step"),
+               ("resolved_rodMeasures_raw.csv", "coupled_dt5_rodMeasures_raw.csv", "CFD step 5 -> 2.5 us", "step"))
 
 
 def measures(path, sc):
@@ -42,10 +49,10 @@ def measures(path, sc):
 def main():
     sc = pm.scene()
     runs, changes, used = {}, {}, set()
-    for fine, coarse, what in REFINEMENTS:
-        if what in used or not all(os.path.exists(os.path.join(HERE, f)) for f in (fine, coarse)):
+    for fine, coarse, what, source in REFINEMENTS:
+        if source in used or not all(os.path.exists(os.path.join(HERE, f)) for f in (fine, coarse)):
             continue
-        used.add(what)
+        used.add(source)
         for f in (fine, coarse):
             runs.setdefault(f, measures(os.path.join(HERE, f), sc))
         changes[what] = {k: runs[fine][k] - runs[coarse][k] for k in MEASURES}

@@ -40,26 +40,35 @@ import hsrod_campaign  # noqa: E402
 
 PLAN = os.path.join(ROOT, "calibration", "campaign", "plan_geometry.json")
 RESULTS = os.path.join(ROOT, "calibration", "campaign", "geometry", "results")
+# Rows of spheres (--rows): three spheres 0.25 d apart (a near-contact chain a
+# body-fitted mesh can resolve), their own small IBM campaign.
+ROWS_PLAN = os.path.join(ROOT, "calibration", "campaign", "plan_body_fitted_rows.json")
+ROWS_RESULTS = os.path.join(ROOT, "calibration", "campaign", "body-fitted-rows", "results")
 UM = 1e-6
-# Pseudo-time iterations per surface level: levels 2-3 meet the residual
-# tolerances in ~300 iterations; on level 4 the residuals stall above them
-# while the force is steady to 1e-7 after ~300 (measured), so level 4 stops
-# at 400 and is judged by the force change over the last 100 iterations.
-END_TIME = {4: 400}
+# Pseudo-time iterations per surface level: a lone sphere meets the residual
+# tolerances at levels 2-3 in ~300 iterations; on level 4, and for the rows
+# at every level, the residuals stall above them while the force is steady
+# to 1e-7 or better after ~300-400 (measured; the row at level 2: 1e-10 at
+# 480), so runs stop at 400 (level 4) or 800 iterations and are judged by
+# the force change over the last 100 iterations.
+END_TIME = {2: 800, 3: 800, 4: 400}
 FORCE_CHANGE_TOLERANCE = 1e-5
+ROWS_GAP = 1.5  # the rows' nearest surface gap to the wall [d] (plan_body_fitted_rows.json)
 
 
 def foam(path, obj, body, cls="dictionary"):
     hsrod_case.foam_file(path, cls, obj, body)
 
 
-def ibm_series(gap, n=1):
-    """The campaign's specs of the lone sphere near the wall at `gap`: {(load, n_d): spec}."""
-    plan = hsrod_campaign.load_plan(PLAN)
+def ibm_series(gap, n=1, plan_path=PLAN, angle=None):
+    """The campaign's specs of the row of n spheres (a lone sphere by default)
+    near the wall at `gap` (row angle `angle`, any if None): {(load, n_d): spec}."""
+    plan = hsrod_campaign.load_plan(plan_path)
     out = {}
     for spec in hsrod_campaign.expand(plan):
         g = spec.get("geometry", {})
-        if g.get("kind") == "wall" and spec["n"] == n and abs(g["gap"] - gap) < 1e-12:
+        if g.get("kind") == "wall" and spec["n"] == n and abs(g["gap"] - gap) < 1e-12 and (
+                angle is None or abs(g["row_angle_deg"] - angle) < 1e-9):
             out[(spec["load"], spec["cells_per_diameter"])] = spec
     return out
 
@@ -184,6 +193,20 @@ mergeTolerance 1e-6;
          "transportModel Newtonian;\nnu %.12g;\n" % nu)
     foam(os.path.join(case, "constant", "turbulenceProperties"), "turbulenceProperties", "simulationType laminar;\n")
     centre = [sum(s["x"][k] for s in spheres) / len(spheres) for k in range(3)]
+    # one forces object per sphere of a row (patch sphere<id>), beside the total
+    per_sphere = "".join("""    sphere%dForces
+    {
+        type forces;
+        libs ("libforces.so");
+        patches (sphere%d);
+        rho rhoInf;
+        rhoInf %.12g;
+        CofR %s;
+        writeControl timeStep;
+        writeInterval 1;
+        log false;
+    }
+""" % (sp["id"], sp["id"], rho, hsrod_case.vec(sp["x"])) for sp in spheres) if len(spheres) > 1 else ""
     foam(os.path.join(case, "system", "controlDict"), "controlDict", """application simpleFoam;
 startFrom latestTime;
 startTime 0;
@@ -211,8 +234,8 @@ functions
         writeInterval 1;
         log false;
     }
-}
-""" % (END_TIME.get(level, 3000), rho, hsrod_case.vec(centre)))
+%s}
+""" % (END_TIME.get(level, 3000), rho, hsrod_case.vec(centre), per_sphere))
     foam(os.path.join(case, "system", "fvSchemes"), "fvSchemes",
          "ddtSchemes { default steadyState; }\ngradSchemes { default Gauss linear; }\n"
          "divSchemes { default none; div(phi,U) bounded Gauss linear; div((nuEff*dev2(T(grad(U))))) Gauss linear; }\n"
@@ -251,9 +274,9 @@ def run(cmd, case, env, log):
     return r.stdout, (c1.children_user - c0.children_user) + (c1.children_system - c0.children_system), time.time() - t0
 
 
-def read_forces(case):
-    """Total force [N] per iteration from the forces function object (v1912 force.dat)."""
-    files = sorted(glob.glob(os.path.join(case, "postProcessing", "sphereForces", "*", "force.dat")))
+def read_forces(case, name="sphereForces"):
+    """Total force [N] per iteration from the forces function object `name` (v1912 force.dat)."""
+    files = sorted(glob.glob(os.path.join(case, "postProcessing", name, "*", "force.dat")))
     rows = []
     for fn in files:
         for line in open(fn):
@@ -300,21 +323,27 @@ def body_fitted(spec, level, work, env, reuse=False):
            "force_change_last_100_it": change, "cpu_s_mesh": None if math.isnan(mesh_cpu) else round(mesh_cpu, 1),
            "cpu_s": None if math.isnan(cpu) else round(cpu, 1),
            "F_over_3pi_mu_d_U": [x / z0 for x in F]}
+    if len(spheres) > 1:
+        out["spheres_F_over_3pi_mu_d_U"] = [[x / z0 for x in read_forces(case, "sphere%dForces" % sp["id"])[-1][1]]
+                                            for sp in spheres]
     print("  body-fitted %s level %d: %d cells, %d it (converged %s, change %.1e), F/(3 pi mu d U) = %s, %s s CPU"
           % (spec["id"], level, cells, iters, converged, change, ["%.4f" % x for x in out["F_over_3pi_mu_d_U"]],
              out["cpu_s"]), flush=True)
     return out
 
 
-def ibm_result(spec):
-    p = os.path.join(RESULTS, spec["id"] + ".json")
+def ibm_result(spec, results=RESULTS):
+    p = os.path.join(results, spec["id"] + ".json")
     if not os.path.exists(p):
         return None
     r = json.load(open(p))
     z0 = 3 * math.pi * spec["mu"] * spec["d"] * spec["U"]
     F = [sum(s["F"][k] for s in r["spheres"]) for k in range(3)]
-    return {"id": spec["id"], "cells_per_diameter": spec["cells_per_diameter"], "cells": r["mesh"]["cells"],
-            "cpu_s": r["run"]["cpu_s"], "F_over_3pi_mu_d_U": [x / z0 for x in F]}
+    out = {"id": spec["id"], "cells_per_diameter": spec["cells_per_diameter"], "cells": r["mesh"]["cells"],
+           "cpu_s": r["run"]["cpu_s"], "F_over_3pi_mu_d_U": [x / z0 for x in F]}
+    if len(r["spheres"]) > 1:
+        out["spheres_F_over_3pi_mu_d_U"] = [[x / z0 for x in s["F"]] for s in sorted(r["spheres"], key=lambda s: s["id"])]
+    return out
 
 
 def main():
@@ -323,6 +352,8 @@ def main():
     ap.add_argument("--levels", type=int, nargs="+", default=[2, 3])
     ap.add_argument("--gaps", type=float, nargs="+", default=[0.5, 1.5])
     ap.add_argument("--loads", nargs="+", default=["friction", "driving"])
+    ap.add_argument("--rows", action="store_true",
+                    help="the rows of three spheres (plan_body_fitted_rows.json) instead of the lone sphere")
     ap.add_argument("--table-only", action="store_true", help="refresh the IBM side and the table, run nothing")
     ap.add_argument("--reuse", action="store_true", help="read a finished or stopped run of a case instead of rerunning it")
     a = ap.parse_args()
@@ -332,23 +363,39 @@ def main():
     os.makedirs(a.work, exist_ok=True)
     out_path = os.path.join(HERE, "results.json")
     results = json.load(open(out_path)) if os.path.exists(out_path) else {"cases": {}}
-    for gap in a.gaps:
-        specs = ibm_series(gap)
+    groups = []  # (key prefix, configuration text, specs, IBM results directory)
+    if a.rows:
+        for angle in (0.0, 90.0):
+            specs = ibm_series(ROWS_GAP, n=3, plan_path=ROWS_PLAN, angle=angle)
+            s6 = next(iter(specs.values()))
+            groups.append(("row of 3 at %g d, %s, wall gap %g d" % (s6["spacing"], "along the wall" if angle == 0
+                                                                    else "normal to the wall", ROWS_GAP),
+                           "three spheres in a row, centre spacing %g d (surface gap %g d), beta %.2f, row %s, "
+                           "nearest surface gap %g d to the side wall y = 0, channel %s" % (
+                               s6["spacing"], s6["spacing"] - 1, s6["beta"],
+                               "along the wall" if angle == 0 else "normal to the wall", ROWS_GAP,
+                               s6["geometry"]["channel"]), specs, ROWS_RESULTS))
+    else:
+        for gap in a.gaps:
+            specs = ibm_series(gap)
+            s6 = next(iter(specs.values()))
+            groups.append(("wall gap %g d" % gap, "lone sphere, beta %.2f, surface gap %g d to the side wall y = 0, "
+                           "channel %s" % (s6["beta"], gap, s6["geometry"]["channel"]), specs, RESULTS))
+    for prefix, configuration, specs, ibm_dir in groups:
         for load in a.loads:
             spec6 = specs[(load, 6)]
-            key = "wall gap %g d, %s" % (gap, load)
+            key = "%s, %s" % (prefix, load)
             entry = results["cases"].setdefault(key, {"body_fitted": {}, "ibm": {}})
-            entry["configuration"] = ("lone sphere, beta %.2f, surface gap %g d to the side wall y = 0, channel "
-                                      "%s; %s" % (spec6["beta"], gap, spec6["geometry"]["channel"],
-                                                  "dragged at -U (cos 45, sin 45): along -x and towards the wall"
-                                                  if load == "friction" else "held in the channel flow (mean U along x)"))
+            entry["configuration"] = configuration + "; " + (
+                "dragged at -U (cos 45, sin 45): along -x and towards the wall" if load == "friction"
+                else "held in the channel flow (mean U along x)")
             for lvl in a.levels:
                 entry["body_fitted"][str(lvl)] = body_fitted(spec6, lvl, a.work, env, a.reuse)
                 with open(out_path, "w") as f:
                     json.dump(results, f, indent=1)
             for (ld, n_d), spec in sorted(specs.items()):
                 if ld == load:
-                    r = ibm_result(spec)
+                    r = ibm_result(spec, ibm_dir)
                     if r:
                         entry["ibm"][str(n_d)] = r
     with open(out_path, "w") as f:
@@ -396,6 +443,15 @@ def write_table(results):
                     continue
                 dif = ["%+.2f %%" % (100 * (fi[k] / fb[k] - 1)) if abs(fb[k]) > 1e-3 else "-" for k in (0, 1)]
                 lines.append("| %s | **IBM d/%s vs %s** | | | %s | %s |" % (key, ib[-1][0], name, dif[0], dif[1]))
+        # rows: per sphere, the finest of each side (the row's sphere 1 at the lowest x / nearest the wall)
+        if bf and ib and "spheres_F_over_3pi_mu_d_U" in bf[-1][1] and "spheres_F_over_3pi_mu_d_U" in ib[-1][1]:
+            fb_s, fi_s = bf[-1][1]["spheres_F_over_3pi_mu_d_U"], ib[-1][1]["spheres_F_over_3pi_mu_d_U"]
+            mean = sum(math.hypot(f[0], f[1]) for f in fb_s) / len(fb_s)
+            for i, (fb, fi) in enumerate(zip(fb_s, fi_s)):
+                lines.append("| %s | sphere %d: body-fitted level %s / IBM d/%s (IBM - body-fitted over the mean "
+                             "per-sphere abs F) | | | %.4f / %.4f (%+.2f %%) | %.4f / %.4f (%+.2f %%) |" % (
+                                 key, i + 1, bf[-1][0], ib[-1][0], fb[0], fi[0], 100 * (fi[0] - fb[0]) / mean,
+                                 fb[1], fi[1], 100 * (fi[1] - fb[1]) / mean))
     with open(os.path.join(HERE, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))

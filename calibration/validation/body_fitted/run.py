@@ -193,20 +193,10 @@ mergeTolerance 1e-6;
          "transportModel Newtonian;\nnu %.12g;\n" % nu)
     foam(os.path.join(case, "constant", "turbulenceProperties"), "turbulenceProperties", "simulationType laminar;\n")
     centre = [sum(s["x"][k] for s in spheres) / len(spheres) for k in range(3)]
-    # one forces object per sphere of a row (patch sphere<id>), beside the total
-    per_sphere = "".join("""    sphere%dForces
-    {
-        type forces;
-        libs ("libforces.so");
-        patches (sphere%d);
-        rho rhoInf;
-        rhoInf %.12g;
-        CofR %s;
-        writeControl timeStep;
-        writeInterval 1;
-        log false;
-    }
-""" % (sp["id"], sp["id"], rho, hsrod_case.vec(sp["x"])) for sp in spheres) if len(spheres) > 1 else ""
+    # the total on the sphere patches and, for a row, one forces object per sphere (patch sphere<id>)
+    forces = forces_object("sphereForces", "spheres", rho, centre) + "".join(
+        forces_object("sphere%dForces" % sp["id"], "sphere%d" % sp["id"], rho, sp["x"])
+        for sp in spheres if len(spheres) > 1)
     foam(os.path.join(case, "system", "controlDict"), "controlDict", """application simpleFoam;
 startFrom latestTime;
 startTime 0;
@@ -222,20 +212,8 @@ timeFormat general;
 runTimeModifiable false;
 functions
 {
-    sphereForces
-    {
-        type forces;
-        libs ("libforces.so");
-        patches (spheres);
-        rho rhoInf;
-        rhoInf %.12g;
-        CofR %s;
-        writeControl timeStep;
-        writeInterval 1;
-        log false;
-    }
 %s}
-""" % (END_TIME.get(level, 3000), rho, hsrod_case.vec(centre), per_sphere))
+""" % (END_TIME.get(level, 3000), forces))
     foam(os.path.join(case, "system", "fvSchemes"), "fvSchemes",
          "ddtSchemes { default steadyState; }\ngradSchemes { default Gauss linear; }\n"
          "divSchemes { default none; div(phi,U) bounded Gauss linear; div((nuEff*dev2(T(grad(U))))) Gauss linear; }\n"
@@ -260,6 +238,23 @@ relaxationFactors
 """)
     foam(os.path.join(case, "system", "decomposeParDict"), "decomposeParDict", "numberOfSubdomains 1;\nmethod none;\n")
     return spheres, scene
+
+
+def forces_object(name, patches, rho, cofr):
+    """A `forces` function object of the controlDict: the load on `patches` every iteration."""
+    return """    %s
+    {
+        type forces;
+        libs ("libforces.so");
+        patches (%s);
+        rho rhoInf;
+        rhoInf %.12g;
+        CofR %s;
+        writeControl timeStep;
+        writeInterval 1;
+        log false;
+    }
+""" % (name, patches, rho, hsrod_case.vec(cofr))
 
 
 def run(cmd, case, env, log):

@@ -13,10 +13,11 @@ measures with the recorded coupled rodIbFoam + LIGGGHTS run (resolved.csv):
 Tolerances, from the uncertainty of the resolved run (README.md beside the
 run): the larger of 3 % of the resolved value (the mesh uncertainty of
 rodIbFoam's rod driving by its own record; velocities, hence times, rotation
-rates and drift, scale with it) and the reference's measured numerical
-uncertainty (resolved_uncertainty.json: root sum of squares of its changes
-over a mesh and a step refinement; it is what bounds the small lateral
-drift, a difference of two loads of ~0.9 U each), plus the resolved run's
+rates and drift, scale with it) and the reference's estimated numerical
+error (resolved_uncertainty.json: Richardson estimates of its mesh and step
+errors from its recorded mesh and step series, root sum of squares; it is
+what bounds the small lateral drift, a difference of two loads of ~0.9 U
+each), plus the resolved run's
 own sampling noise (the interval-to-interval wobble of the measure from the
 exchange's oscillatory root, measured in the record). Not widened to make a
 level pass.

@@ -45,12 +45,12 @@ RESULTS = os.path.join(ROOT, "calibration", "campaign", "geometry", "results")
 ROWS_PLAN = os.path.join(ROOT, "calibration", "campaign", "plan_body_fitted_rows.json")
 ROWS_RESULTS = os.path.join(ROOT, "calibration", "campaign", "body-fitted-rows", "results")
 UM = 1e-6
-# Pseudo-time iterations per surface level: a lone sphere meets the residual
-# tolerances at levels 2-3 in ~300 iterations; on level 4, and for the rows
-# at every level, the residuals stall above them while the force is steady
-# to 1e-7 or better after ~300-400 (measured; the row at level 2: 1e-10 at
-# 480), so runs stop at 400 (level 4) or 800 iterations and are judged by
-# the force change over the last 100 iterations.
+# Pseudo-time iterations per surface level: a lone sphere and the held rows
+# meet the residual tolerances at levels 2-3 in ~300 iterations; on level 4,
+# and for the dragged rows, the residuals stall above them while the force is
+# steady to 1e-7 or better after ~300-400 (measured; the dragged row at level
+# 2: 1e-10 at 480), so runs stop at 400 (level 4) or 800 iterations and are
+# judged by the force change over the last 100 iterations.
 END_TIME = {2: 800, 3: 800, 4: 400}
 FORCE_CHANGE_TOLERANCE = 1e-5
 ROWS_GAP = 1.5  # the rows' nearest surface gap to the wall [d] (plan_body_fitted_rows.json)

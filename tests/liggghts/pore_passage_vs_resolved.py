@@ -63,9 +63,8 @@ def main():
         run = pm.read_run(out)
     print(choice[0] if choice else "no auto line")
     sc = pm.scene()
-    a0 = -(90.0 + sc["rod"]["angle_deg"])  # the paper's initial angle (create_rod convention)
     s_ref, s = pm.summary(ref, sc), pm.summary(run, sc)
-    rot_ref, rot = s_ref["peak_angle_deg"] - a0, s["peak_angle_deg"] - a0
+    rot_ref, rot = s_ref["rotation"], s["rotation"]  # peak angle - the paper's initial angle
     with open(os.path.join(PASSAGE, "resolved_uncertainty.json")) as f:
         measured = json.load(f)["uncertainty"]  # t_pass [s], rotation [deg], lateral_after [-]
     checks = [

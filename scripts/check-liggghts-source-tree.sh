@@ -20,8 +20,8 @@ fi
 rm -rf tree && mkdir tree
 tar xf liggghts_*.orig.tar.* -C tree --strip-components=1
 src="tree/src"
-cp "$root"/liggghts-package/src/*.h "$root"/liggghts-package/src/*.cpp "$src"/
-rm -f "$src/main.cpp" "$src"/style_registration.* "$src/style_hsrod.h"   # hsrod-only glue
+pkg="$root/liggghts-package/src"
+cp "$pkg"/styles/* "$pkg"/support/* "$pkg"/app/liggghts_workarounds.* "$pkg"/app/run_signals.* "$src"/   # flat, as LIGGGHTS keeps its src/
 (cd "$src" && sh Make.sh style > /dev/null)
 # LIGGGHTS 3.8.0's utils.h casts an rvalue stream, which GCC >= 11 rejects in
 # any C++11+ mode (Debian built the library with an older compiler): patch

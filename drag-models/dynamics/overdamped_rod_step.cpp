@@ -252,6 +252,7 @@ struct OverdampedRodSolver::Workspace {
   std::vector<Cell> cells;
   Eigen::VectorXd rhs, dy;  // loads [N, N m], then displacements [m, rad]
   Eigen::VectorXd velocities, hydrodynamic;  // 3n work vectors for the coupled drag
+  Eigen::VectorXd load_law_scratch;           // RodDrag::forces' stacked v and R v
   std::vector<Vector6d> previous_velocities;  // (v, omega) of the last step, where wall friction is linearised
   // Wall friction at the step's end velocities (step()): the slip velocity
   // of each rubbing wall-contact point (3 slots per contact, in the order
@@ -1144,16 +1145,7 @@ void OverdampedRodSolver::step_once(OverdampedRod& rod, const RodDrag& drag, dou
     u << w.previous_velocities[c.i], w.previous_velocities[c.j];
     result.friction_force += (c.friction * u).head<3>().norm();
   }
-  // F_hyd = driving - R v at the new velocities.
-  if (drag.coupled()) {
-    w.velocities.resize(3 * n);
-    for (int i = 0; i < n; ++i) w.velocities.segment<3>(3 * i) = result.velocities[i];
-    w.hydrodynamic.noalias() = drag.coupled_resistance * w.velocities;
-    for (int i = 0; i < n; ++i) result.hydrodynamic_forces[i] = drag.driving_force[i] - w.hydrodynamic.segment<3>(3 * i);
-  } else {
-    for (int i = 0; i < n; ++i)
-      result.hydrodynamic_forces[i] = drag.driving_force[i] - drag.resistance[i] * result.velocities[i];
-  }
+  drag.forces(result.velocities, result.hydrodynamic_forces, w.load_law_scratch);  // at the new velocities
   const Clock::time_point t_end = Clock::now();
   OverdampedSolverStatistics& stats = w.statistics;
   ++stats.steps;

@@ -51,8 +51,19 @@ struct RodDrag {
 
   bool coupled() const { return coupled_resistance.size() > 0; }
   void resize(int n);
-  // F = driving - R v for all spheres (v: 3n).
+
+  // The sphere load law, in one place for every fix, compute and step:
+  //   F = driving - R v,   T_i = driving_torque_i - r_i omega_i.
+  // F for all spheres (v: 3n).
   Eigen::VectorXd forces(const Eigen::VectorXd& velocities) const;
+  // F per sphere into `out` (resized to n); `scratch` holds the stacked v and
+  // R v of a coupled R, so a caller that keeps both allocates only once.
+  void forces(const std::vector<Eigen::Vector3d>& velocities, std::vector<Eigen::Vector3d>& out,
+              Eigen::VectorXd& scratch) const;
+  // T_i at angular velocity omega_i [rad/s].
+  Eigen::Vector3d torque(int i, const Eigen::Vector3d& angular_velocity) const {
+    return driving_torque[i] - rotational_resistance[i] * angular_velocity;
+  }
 };
 
 struct HydrodynamicParameters {

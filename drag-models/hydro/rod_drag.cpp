@@ -40,6 +40,20 @@ Eigen::VectorXd RodDrag::forces(const Eigen::VectorXd& velocities) const {
   return f;
 }
 
+void RodDrag::forces(const std::vector<Eigen::Vector3d>& velocities, std::vector<Eigen::Vector3d>& out,
+                     Eigen::VectorXd& scratch) const {
+  const int n = static_cast<int>(driving_force.size());
+  out.resize(n);
+  if (coupled()) {
+    scratch.resize(6 * n);  // stacked v, then R v
+    for (int i = 0; i < n; ++i) scratch.segment<3>(3 * i) = velocities[i];
+    scratch.tail(3 * n).noalias() = coupled_resistance * scratch.head(3 * n);
+    for (int i = 0; i < n; ++i) out[i] = driving_force[i] - scratch.segment<3>(3 * (n + i));
+  } else {
+    for (int i = 0; i < n; ++i) out[i] = driving_force[i] - resistance[i] * velocities[i];
+  }
+}
+
 void HydrodynamicModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const {
   const std::unique_ptr<ModelState> state = make_state();
   evaluate(rod, flow, out, state.get());

@@ -112,7 +112,7 @@ void ComputeHeleShawRodLoad::measure() {
     const hsrod::RigidRodLoad rigid = hsrod::rigid_rod_load(rod, drag);
     std::vector<Eigen::Vector3d> torques(n);
     for (int k = 0; k < n; k++)
-      torques[k] = drag.driving_torque[k] - drag.rotational_resistance[k] * spheres[k].angular_velocity;
+      torques[k] = drag.torque(k, spheres[k].angular_velocity);
     const Eigen::Vector3d now = hsrod::rod_in_plane_load(rod, rigid.centre, drag.forces(v), torques);
     out[CENTRE_X] = rigid.centre.x();
     out[CENTRE_Y] = rigid.centre.y();

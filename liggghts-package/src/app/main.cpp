@@ -8,7 +8,7 @@
 #include "update.h"
 
 #include "run_signals.h"
-#include "screen/screen_mode.h"
+#include "screen_mode.h"
 #include "style_registration.h"
 
 #include <mpi.h>

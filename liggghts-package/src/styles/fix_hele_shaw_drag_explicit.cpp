@@ -63,7 +63,7 @@ void FixHeleShawDrag::post_force(int) {
     for (int k = 0; k < n; k++) {
       const int i = atom->map(spheres[k]->tag);
       if (i < 0 || i >= atom->nlocal) continue;
-      const Eigen::Vector3d torque = drag.driving_torque[k] - drag.rotational_resistance[k] * spheres[k]->angular_velocity;
+      const Eigen::Vector3d torque = drag.torque(k, spheres[k]->angular_velocity);
       const Eigen::Vector3d sphere_force = forces.segment<3>(3 * k);  // [N]
       for (int a = 0; a < 3; a++) {
         atom->f[i][a] += sphere_force[a];

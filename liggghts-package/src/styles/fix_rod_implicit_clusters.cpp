@@ -203,8 +203,8 @@ void FixRodImplicit::scatter_rod(const std::vector<GatheredSphere> &spheres, con
       atom->omega[i][a] = result.angular_velocities[k][a];
     }
     bonds_->set_orientation(i, rod.orientations[k]);
-    // The load at the step's new velocities: F = d - R v, T = t - r omega.
-    const Eigen::Vector3d torque = drag.driving_torque[k] - drag.rotational_resistance[k] * result.angular_velocities[k];
+    // The load at the step's new velocities (the step gave F already).
+    const Eigen::Vector3d torque = drag.torque(k, result.angular_velocities[k]);
     drag_->store_loads(i, drag.driving_force[k], result.hydrodynamic_forces[k], torque);
   }
 }

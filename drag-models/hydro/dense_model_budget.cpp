@@ -18,14 +18,14 @@ bool nonlocal_model_fits(long spheres, double limit_bytes) {
   return nonlocal_model_bytes(spheres) <= limit_bytes;
 }
 
-void check_nonlocal_model_budget(long spheres, double limit_bytes) {
-  if (nonlocal_model_fits(spheres, limit_bytes)) return;
+std::string nonlocal_model_budget_problem(long spheres, double limit_bytes) {
+  if (nonlocal_model_fits(spheres, limit_bytes)) return "";
   std::ostringstream m;
   m.precision(3);
   m << "model nonlocal (level 3) for a rod of " << spheres << " spheres needs dense " << 3 * spheres << " x "
     << 3 * spheres << " matrices: predicted " << nonlocal_model_bytes(spheres) / 1e9 << " GB (limit "
-    << limit_bytes / 1e9 << " GB); use model local (level 2) or isotropic, or raise the memory limit";
-  throw DenseModelTooLarge(m.str());
+    << limit_bytes / 1e9 << " GB); use model local (level 2) or isotropic, or raise the memory limit (keyword memory_limit)";
+  return m.str();
 }
 
 }  // namespace hsrod

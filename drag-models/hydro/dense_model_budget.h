@@ -1,13 +1,11 @@
-// Bounded work for the dense (non-local) hydrodynamic models (issue 10):
-// level 3 couples every pair of spheres of a rod, so one evaluation holds
-// dense 3n x 3n matrices (the coupling, its factorisation, the resistance and
+// Bounded work for the dense (non-local) hydrodynamic models: level 3
+// couples every pair of spheres of a rod, so one evaluation holds dense 3n x 3n matrices (the coupling, its factorisation, the resistance and
 // its symmetric part; the implicit step copies the resistance into a dense
 // system and factorises it). A rod of N = 10 000 spheres needs 7.2 GB per
 // matrix: such a request is refused (or a cheaper model chosen) from this
 // prediction, before anything is allocated.
 #pragma once
 
-#include <stdexcept>
 #include <string>
 
 namespace hsrod {
@@ -24,16 +22,11 @@ double nonlocal_model_bytes(long spheres);
 // factorisations of 3n x 3n: 2 x (2/3)(3n)^3) [-].
 double nonlocal_model_flops(long spheres);
 
-class DenseModelTooLarge : public std::invalid_argument {
- public:
-  using std::invalid_argument::invalid_argument;
-};
-
 // True when the level-3 model for `spheres` spheres fits `limit_bytes`.
 bool nonlocal_model_fits(long spheres, double limit_bytes);
 
-// Throws DenseModelTooLarge naming the rod size, the matrix size, the
-// predicted memory, the limit and the alternatives.
-void check_nonlocal_model_budget(long spheres, double limit_bytes);
+// "" when it fits, else the rod size, the matrix size, the predicted
+// memory, the limit and the alternatives (NonlocalRodModel::resource_problem).
+std::string nonlocal_model_budget_problem(long spheres, double limit_bytes);
 
 }  // namespace hsrod

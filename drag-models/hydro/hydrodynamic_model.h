@@ -66,6 +66,12 @@ struct RodDrag {
   }
 };
 
+// The caller's bounds on the work of one evaluation (a model's own limits,
+// e.g. level 4's max_window_cells, live in its options).
+struct ResourceLimits {
+  double dense_memory_bytes = 2e9;  // largest dense matrices of a non-local model [bytes] (keyword memory_limit)
+};
+
 struct HydrodynamicParameters {
   double viscosity = 1e-3;        // mu [Pa s]
   double gap_height = 0.0;        // H [m]
@@ -117,6 +123,14 @@ class HydrodynamicModel {
   // hydrodynamic interaction is dropped (the rods are evaluated apart);
   // 0: the model has no interaction between rods.
   virtual double interaction_reach() const { return 0.0; }
+  // "" when this model can evaluate `rod` in `flow` within `limits`, else
+  // why not: the predicted work, the limit and the settings that lower it.
+  // Asked before the first evaluation, so that a run too large is refused
+  // (or, under `auto`, a cheaper level chosen) before anything is allocated.
+  virtual std::string resource_problem(const RodGeometry& /*rod*/, const BackgroundFlow& /*flow*/,
+                                       const ResourceLimits& /*limits*/) const {
+    return "";
+  }
 };
 
 // The loads of rods evaluated apart, joined rod after rod into one load

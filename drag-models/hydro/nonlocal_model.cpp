@@ -4,6 +4,7 @@
 #include "common/math_constants.h"
 
 #include "hydro/brinkman_green.h"
+#include "hydro/dense_model_budget.h"
 
 #include <Eigen/Dense>
 
@@ -304,6 +305,11 @@ double depth_averaged_interaction_reach(double gap_height, double viscosity, dou
 double NonlocalRodModel::interaction_reach() const {
   return depth_averaged_interaction_reach(parameters_.gap_height, parameters_.viscosity, obstruction_friction_,
                                           kInteractionTolerance);
+}
+
+std::string NonlocalRodModel::resource_problem(const RodGeometry& rod, const BackgroundFlow& /*flow*/,
+                                               const ResourceLimits& limits) const {
+  return nonlocal_model_budget_problem(rod.size(), limits.dense_memory_bytes);
 }
 
 }  // namespace hsrod

@@ -87,6 +87,9 @@ class NonlocalRodModel : public LocalDragBase {
   // ~1e-4 of the solved ones (tests/drag-models/hydro/test_nonlocal_model.cpp
   // measures it; tests/benchmarks/RESULTS.md the passage's change).
   static constexpr double kShapeTolerance = 1e-4;  // [-], of the sphere diameter
+  // Dense 3n x 3n matrices against limits.dense_memory_bytes (hydro/dense_model_budget.h).
+  std::string resource_problem(const RodGeometry& rod, const BackgroundFlow& flow,
+                               const ResourceLimits& limits) const override;
   // Several rods: the same Green's function between the spheres of all of
   // them (the obstruction of one rod shields or drives the others), one
   // dense solve over all their spheres. Level 3 itself does not tell

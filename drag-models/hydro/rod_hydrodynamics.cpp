@@ -54,6 +54,18 @@ RodGeometry RodHydrodynamics::rod_geometry(int id, std::vector<Eigen::Vector3d> 
   return g;
 }
 
+namespace {
+// The first rod `model` cannot evaluate within its resources: why ("" if none).
+std::string first_resource_problem(const HydrodynamicModel& model, const std::vector<RodGeometry>& rods,
+                                   const BackgroundFlow& flow, const ResourceLimits& limits) {
+  for (const RodGeometry& rod : rods) {
+    std::string problem = model.resource_problem(rod, flow, limits);
+    if (!problem.empty()) return problem;
+  }
+  return "";
+}
+}  // namespace
+
 const ModelChoiceReport& RodHydrodynamics::choose_model(double d, const std::vector<RodGeometry>& rods,
                                                         double bending_stiffness) {
   if (model_) return report_;
@@ -70,12 +82,21 @@ const ModelChoiceReport& RodHydrodynamics::choose_model(double d, const std::vec
   report.name = spec_.name;
   if (spec_.name == "auto") {
     const auto level3 = find_model_level(3)->make(parameters, table, spec_.options);
-    report.automatic = true;
-    report.automatic_choice = choose_auto_model(rods, *flow_, d / gap, *level3, bending_stiffness, spec_.tolerance,
-                                                spec_.error_tolerance);
-    report.name = report.automatic_choice.model;
+    const std::string too_large = first_resource_problem(*level3, rods, *flow_, spec_.limits);
+    if (too_large.empty()) {
+      report.automatic = true;
+      report.automatic_choice = choose_auto_model(rods, *flow_, d / gap, *level3, bending_stiffness,
+                                                  spec_.tolerance, spec_.error_tolerance);
+      report.name = report.automatic_choice.model;
+    } else {
+      report.name = find_model_level(2)->name;
+      report.note = "auto: level 3 not estimated, level 2 chosen: " + too_large;
+    }
   }
-  model_ = make_hydrodynamic_model(report.name, parameters, table, spec_.options.window);
+  auto model = make_hydrodynamic_model(report.name, parameters, table, spec_.options.window);
+  const std::string too_large = first_resource_problem(*model, rods, *flow_, spec_.limits);
+  if (!too_large.empty()) throw std::invalid_argument(too_large);
+  model_ = std::move(model);
   state_ = model_->make_state();
   if (!pending_state_.empty()) {
     restore_state(std::move(pending_state_));

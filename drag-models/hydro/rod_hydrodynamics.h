@@ -50,6 +50,7 @@ struct ModelSpec {
   double error_tolerance = 0.10;     // auto: accepted error of forces and velocities against resolved runs [-]
   std::string coefficients_file;     // confinement table; "" = built-in defaults
   ModelOptions options;              // per-model settings (level-4 window)
+  ResourceLimits limits;             // the caller's bounds on one evaluation (level 3's dense memory)
   int spheres_per_section = 1;       // spheres per rod cross-section
 };
 
@@ -61,6 +62,7 @@ struct ModelChoiceReport {
   std::string coefficients_source;   // the confinement table's source line
   bool automatic = false;            // chosen by the `auto` policy
   AutoModelChoice automatic_choice;  // when automatic
+  std::string note;                  // a level `auto` skipped for its resources, and why ("" if none)
 };
 
 class RodHydrodynamics {
@@ -80,9 +82,6 @@ class RodHydrodynamics {
   double gap_bottom() const { return gap_bottom_; }  // z of the lower gap wall [m]
   int spheres_per_section() const { return spec_.spheres_per_section; }
   const ModelSpec& model_spec() const { return spec_; }
-  // Replaces the requested model name before choose_model() (the caller's
-  // resource bounds: `auto` when even its level-3 estimate would not fit).
-  void override_model_name(const std::string& name) { spec_.name = name; }
   // True when x [m] lies in the fluid: inside the planform and the gap.
   bool in_fluid(const Eigen::Vector3d& x) const;
   // A rod of this scene: sphere centres (ordered section by section) and diameter.
@@ -90,8 +89,12 @@ class RodHydrodynamics {
 
   // Builds the model for spheres of diameter d [m]: the one asked for, or
   // for `auto` the choice over `rods` (their current shapes) with the bonds'
-  // bending stiffness EI [N m^2] (<= 0: unbonded rigid spheres). Once only;
-  // later calls return the first report. Throws for beta = d/H >= 1 or a bad table.
+  // bending stiffness EI [N m^2] (<= 0: unbonded rigid spheres). Every rod
+  // is checked against the model's resources (spec.limits): a requested
+  // model too large throws std::invalid_argument with the figures; under
+  // `auto` a level 3 too large is not even estimated and level 2 is chosen
+  // (ModelChoiceReport::note says so). Once only; later calls return the
+  // first report. Throws for beta = d/H >= 1 or a bad table.
   const ModelChoiceReport& choose_model(double sphere_diameter, const std::vector<RodGeometry>& rods,
                                         double bending_stiffness);
   bool has_model() const { return static_cast<bool>(model_); }

@@ -155,6 +155,9 @@ class TwoWayWindowModel : public LocalDragBase {
   // check before the run (bounded work, issue 10).
   long window_cells_for(const RodGeometry& rod, const BackgroundFlow& flow) const;
   long max_window_cells() const { return options_.max_window_cells; }
+  // The window against max_window_cells (twoway_window_resources.cpp).
+  std::string resource_problem(const RodGeometry& rod, const BackgroundFlow& flow,
+                               const ResourceLimits& limits) const override;
 
   double film_friction() const { return film_friction_; }  // zeta_f [N s/m]
   double free_self_mobility() const { return free_self_mobility_; }  // m_free [m/(N s)]

@@ -138,26 +138,20 @@ void FixHeleShawDrag::choose_model() {
   if (-global[1] > d * (1 + 1e-9))
     error->all(FLERR, "fix hele_shaw/drag: all spheres of the group must share one diameter");
 
+  // Every rod as it stands: `auto` chooses from their shapes, and the facade
+  // checks each against the model's resources before anything is allocated.
+  RodGather gather(lmp);
+  gather.gather(groupbit, nullptr);
   std::vector<hsrod::RodGeometry> rods;
+  for (const auto &rod : gather.rods) rods.push_back(rod_geometry(*hydro_, rod.first, rod.second, d));
   double bending_stiffness = 0.0;  // EI [N m^2]; 0: no bonds, rigid spheres
-  const std::string requested = hydro_->model_spec().name;
-  bool level3_too_large = false;  // the level-3 model (auto: its estimate) would not fit memory_limit
-  if (requested == "auto" || requested == "nonlocal") {
-    RodGather gather(lmp);
-    gather.gather(groupbit, nullptr);
-    level3_too_large = !dense_model_fits(gather);
-    if (level3_too_large) hydro_->override_model_name("local");  // auto: not even estimated
-    if (requested == "auto" && !level3_too_large) {
-      const FixRodBonds *bonds = nullptr;
-      for (int f = 0; f < modify->nfix; f++)
-        if (strcmp(modify->fix[f]->style, "rod/bonds") == 0) bonds = dynamic_cast<FixRodBonds *>(modify->fix[f]);
-      if (bonds) bending_stiffness = bonds->bond_set().bending_stiffness(d);
-      for (const auto &rod : gather.rods) rods.push_back(rod_geometry(*hydro_, rod.first, rod.second, d));
-    }
-  }
+  for (int f = 0; f < modify->nfix; f++)
+    if (strcmp(modify->fix[f]->style, "rod/bonds") == 0)
+      bending_stiffness = dynamic_cast<FixRodBonds *>(modify->fix[f])->bond_set().bending_stiffness(d);
   try {
     const hsrod::ModelChoiceReport &choice = hydro_->choose_model(d, rods, bending_stiffness);
     char msg[512];
+    if (!choice.note.empty()) report(("fix hele_shaw/drag: " + choice.note + "\n").c_str());
     if (choice.automatic) {
       // every level's expected error (cross-check record), the bending estimate, the choice
       const std::string line = "fix hele_shaw/drag: auto: " + choice.automatic_choice.summary +
@@ -172,7 +166,6 @@ void FixHeleShawDrag::choose_model() {
     std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s", e.what());
     error->all(FLERR, msg);
   }
-  check_window_budget(d);
 }
 
 // The explicit drag limit 2 m / zeta_max over all rods (the facade's).

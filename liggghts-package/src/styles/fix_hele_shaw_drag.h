@@ -72,10 +72,7 @@ class FixHeleShawDrag : public Fix {
   // fix_hele_shaw_drag_checks.cpp: the scene and the spheres checked before any work.
   void check_confinement_before_solve(const hsrod::SceneSpec &scene, const hsrod::ModelSpec &model);
   void check_placement();
-  bool dense_model_fits(const class RodGather &gather);
-  void check_window_budget(double sphere_diameter);  // level 4: every rod's window within max_window_cells
   bool midplane_warned_ = false;  // rods off the gap mid-plane are warned about once
-  double dense_memory_limit_ = 2e9;  // memory_limit: largest dense level-3 model [bytes]
   std::unique_ptr<hsrod::RodHydrodynamics> hydro_;
   bool applied_by_integrator_;
   double **hydro_force_;          // per atom, last load: total, driving, friction [N], torque [N m] (LoadColumn)

@@ -1,9 +1,10 @@
 /* ----------------------------------------------------------------------
    hsrod - fix hele_shaw/drag: checks of the scene against the spheres
-   before any work (issue 10): confinement beta against the coefficient
-   table before the background flow is solved, and at each run's start the
-   spheres' placement in the fluid, between the gap walls and in the gap's
-   mid-plane, and the dense level-3 model's memory against memory_limit.
+   before any work: confinement beta against the coefficient table before
+   the background flow is solved, and at each run's start the spheres'
+   placement in the fluid, between the gap walls and in the gap's
+   mid-plane. (The model's own resources are checked by the facade,
+   RodHydrodynamics::choose_model.)
    See fix_hele_shaw_drag.h.
 ------------------------------------------------------------------------- */
 
@@ -15,9 +16,7 @@
 
 #include "rod_gather.h"
 
-#include "hydro/dense_model_budget.h"
 #include "hydro/rod_hydrodynamics.h"
-#include "hydro/twoway_window_model.h"
 #include "rod_assembly.h"
 
 #include <mpi.h>
@@ -142,54 +141,3 @@ void FixHeleShawDrag::check_placement() {
   error->warning(FLERR, msg);
 }
 
-// Bounded work (issue 10: `model auto` with N = 10 000 spheres built a 7 GB
-// dense level-3 matrix, then std::bad_alloc): level 3 holds dense 3n x 3n
-// matrices (hydro/dense_model_budget.h). Requested explicitly and above
-// memory_limit: an ERROR with the figures, before anything is allocated.
-// Under auto: false (level 3 is then not even evaluated for the estimate),
-// with a line saying so.
-bool FixHeleShawDrag::dense_model_fits(const RodGather &gather) {
-  long largest = 0;  // spheres of the largest rod
-  for (const auto &rod : gather.rods) largest = std::max<long>(largest, static_cast<long>(rod.second.size()));
-  if (hsrod::nonlocal_model_fits(largest, dense_memory_limit_)) return true;
-  char msg[512];
-  if (hydro_->model_spec().name == "nonlocal") {
-    try {
-      hsrod::check_nonlocal_model_budget(largest, dense_memory_limit_);
-    } catch (const std::exception &e) {
-      std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s (keyword memory_limit)", e.what());
-      error->all(FLERR, msg);
-    }
-  }
-  std::snprintf(msg, sizeof(msg),
-                "fix hele_shaw/drag: auto: level 3 for the largest rod (%ld spheres) would need %.3g GB of dense "
-                "matrices (memory_limit %.3g GB): not estimated, level 2 chosen\n",
-                largest, hsrod::nonlocal_model_bytes(largest) / 1e9, dense_memory_limit_ / 1e9);
-  report(msg);
-  return false;
-}
-
-// Bounded work (issue 10): level 4 refuses a window above max_window_cells
-// when it places one (a 10 000-sphere rod: 2.2 million cells). Checked for
-// every rod as it stands before the run, so the user gets the figures and
-// the keywords that shrink the window instead of a refusal from inside the
-// first step.
-void FixHeleShawDrag::check_window_budget(double sphere_diameter) {
-  if (!hydro_->has_model()) return;
-  const auto *twoway = dynamic_cast<const hsrod::TwoWayWindowModel *>(&hydro_->model());
-  if (!twoway) return;
-  RodGather gather(lmp);
-  gather.gather(groupbit, nullptr);
-  for (const auto &rod : gather.rods) {
-    const hsrod::RodGeometry g = rod_geometry(*hydro_, rod.first, rod.second, sphere_diameter);
-    const long cells = twoway->window_cells_for(g, hydro_->flow());
-    if (cells <= twoway->max_window_cells()) continue;
-    char msg[512];
-    std::snprintf(msg, sizeof(msg),
-                  "fix hele_shaw/drag: model twoway: the window of rod %d (%d spheres) would have %ld cells, above "
-                  "the limit of %ld: use a coarser window_cells (2 to 16), a smaller window_margin or window_fine, "
-                  "or a shorter rod (or model nonlocal / local)",
-                  rod.first, static_cast<int>(rod.second.size()), cells, twoway->max_window_cells());
-    error->all(FLERR, msg);
-  }
-}

@@ -168,7 +168,7 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
       placement_check_ = parse_yes_no(error, kStyle, key, arg[iarg + 1]);
     } else if (strcmp(key, "memory_limit") == 0) {
       need(1);
-      dense_memory_limit_ = positive(key, number(1), " bytes");
+      model.limits.dense_memory_bytes = positive(key, number(1), " bytes");
     } else {
       char msg[512];
       std::snprintf(msg, sizeof(msg),

@@ -136,3 +136,58 @@ TEST(RodHydrodynamics, AutoChoosesByTheRecordedErrorAndTheMissedBending) {
     EXPECT_EQ(report.name, "local");
   }
 }
+
+// Resource bounds are the facade's policy, asked of each model
+// (HydrodynamicModel::resource_problem): 40 spheres at level 3 hold
+// 6 (120)^2 doubles = 691 200 bytes, so a limit of 1e5 bytes refuses a
+// requested `nonlocal` and makes `auto` skip level 3 for level 2 with a note;
+// the default limit accepts both.
+TEST(RodHydrodynamics, ModelResourcesRefuseARequestedModelAndSteerAuto) {
+  {
+    ModelSpec spec = model_named("nonlocal");
+    spec.limits.dense_memory_bytes = 1e5;
+    RodHydrodynamics hydro(straight_channel(), spec);
+    const RodGeometry rod = centred_rod(hydro, 40, 0.5);
+    try {
+      hydro.choose_model(kD, {rod}, 0.0);
+      FAIL() << "expected the level-3 model to be refused";
+    } catch (const std::invalid_argument& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("40 spheres"), std::string::npos) << m;
+      EXPECT_NE(m.find("memory_limit"), std::string::npos) << m;
+    }
+    EXPECT_FALSE(hydro.has_model());
+  }
+  {
+    ModelSpec spec = model_named("auto");
+    spec.limits.dense_memory_bytes = 1e5;
+    RodHydrodynamics hydro(straight_channel(), spec);
+    const RodGeometry rod = centred_rod(hydro, 40, 0.5);
+    const ModelChoiceReport& report = hydro.choose_model(kD, {rod}, 0.0);
+    EXPECT_EQ(report.level, 2);
+    EXPECT_FALSE(report.automatic);
+    EXPECT_NE(report.note.find("level 3 not estimated"), std::string::npos) << report.note;
+  }
+  {
+    RodHydrodynamics hydro(straight_channel(), model_named("nonlocal"));
+    const RodGeometry rod = centred_rod(hydro, 40, 0.5);
+    EXPECT_EQ(hydro.choose_model(kD, {rod}, 0.0).level, 3);
+    EXPECT_TRUE(hydro.choose_model(kD, {rod}, 0.0).note.empty());
+  }
+}
+
+// Level 4 refuses, before the run, a window above its max_window_cells.
+TEST(RodHydrodynamics, TwoWayWindowAboveItsCellLimitIsRefusedBeforeTheRun) {
+  ModelSpec spec = model_named("twoway");
+  spec.options.window.max_window_cells = 100;
+  RodHydrodynamics hydro(straight_channel(), spec);
+  const RodGeometry rod = centred_rod(hydro, 10, 0.0);
+  try {
+    hydro.choose_model(kD, {rod}, 0.0);
+    FAIL() << "expected the window to be refused";
+  } catch (const std::invalid_argument& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("above the limit of 100"), std::string::npos) << m;
+    EXPECT_NE(m.find("window_cells"), std::string::npos) << m;
+  }
+}

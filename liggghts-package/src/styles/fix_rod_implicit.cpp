@@ -188,165 +188,55 @@ void FixRodImplicit::setup(int) {
 }
 
 void FixRodImplicit::initial_integrate(int) {
-  using Clock = std::chrono::steady_clock;
   const Clock::time_point step_start = Clock::now();
-  const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
-  hsrod::RodHydrodynamics &hydro = drag_->hydrodynamics();
-  const hsrod::RodBondSet &bond_set = bonds_->bond_set();
   RodGather &gather = gather_;
   gather.gather(groupbit, bonds_);
   check_whole_rods(gather);
-  const double dt = update->dt;
-  hsrod::WallContactParameters walls;
-  walls.youngs_modulus = bond_set.youngs_modulus;
-  walls.poisson_ratio = bond_set.poisson_ratio;
-  walls.gap_bottom = hydro.gap_bottom();
-  walls.friction_coefficient = wall_friction_;
-  walls.slip_velocity = slip_velocity_;
-  walls.friction_iterations = friction_iterations_;
-  walls.friction_tolerance = friction_tolerance_;
-  walls.rod_contact = rod_contact_;
-  walls.rod_friction_coefficient = rod_contact_ ? rod_friction_ : 0.0;
-
-  double largest = 0.0, wall_force = 0.0;
-  int contacts = 0, substeps = 1;
+  const hsrod::WallContactParameters walls = wall_contact_parameters();
   stepped_rods_.clear();
   // Rods that touch or interact hydrodynamically are stepped together
   // (fix_rod_implicit_clusters.cpp, dynamics/rod_cluster.h); every proc
-  // holds every rod and finds the same clusters. A rod alone takes the
-  // step below.
+  // holds every rod and finds the same clusters. A rod alone takes its own
+  // step (fix_rod_implicit_rod_step.cpp).
   const std::vector<std::vector<int>> clusters = step_clusters(gather);
   std::set<int> jointly;
   for (const std::vector<int> &cluster : clusters)
     if (cluster.size() > 1) jointly.insert(cluster.begin(), cluster.end());
+  StepTotals totals;
   for (const auto &entry : gather.rods) {
-    const std::vector<GatheredSphere> &spheres = entry.second;
-    const int n = static_cast<int>(spheres.size());
     if (jointly.count(entry.first)) continue;
     if (held_rods_.count(entry.first)) {
-      hold_rod(spheres);
+      hold_rod(entry.second);
       continue;
     }
-    // The rod's structures live from step to step (no allocation per step).
-    RodScratch &scratch = scratch_by_rod_[entry.first];
-    hsrod::OverdampedRod &rod = scratch.rod;
-    update_overdamped_rod(spheres, bond_set, rod, scratch.stiffnesses);
-    // Wall friction is linearised about the velocities of the last step
-    // (this fix set them: v = dx/dt).
-    rod.velocities.resize(n);
-    rod.angular_velocities.resize(n);
-    for (int k = 0; k < n; k++) {
-      rod.velocities[k] = spheres[k].velocity;
-      rod.angular_velocities[k] = spheres[k].angular_velocity;
-    }
-    update_rod_geometry(hydro, entry.first, spheres, scratch.geometry);
-    const hsrod::RodGeometry &geometry = scratch.geometry;
-    hsrod::RodDrag &drag = scratch.drag;
-    const Clock::time_point drag_start = Clock::now();
-    try {
-      hydro.loads(geometry, drag);
-    } catch (const std::exception &e) {
-      char msg[768];
-      std::snprintf(msg, sizeof(msg), "fix rod/implicit: rod %d at step " BIGINT_FORMAT ": drag model: %s",
-                    entry.first, update->ntimestep, e.what());
-      error->all(FLERR, msg);
-    }
-    cost_.drag_seconds += seconds_since(drag_start);
-    cost_.sphere_steps += n;
-
-    scratch.before = rod.positions;
-    const std::vector<Eigen::Vector3d> &before = scratch.before;
-    // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
-    const hsrod::ChannelGeometry *scene_walls = walls_ ? &hydro.geometry() : nullptr;
-    hsrod::OverdampedRodSolver &solver = solvers_by_rod_[entry.first];
-    const hsrod::OverdampedStepResult &result = guard_ ? scratch.report.result : scratch.result;
-    if (guard_) {
-      // Accuracy guard: substeps (drag re-evaluated at each) or a refusal.
-      RodScratch *at = &scratch;  // two pointers: std::function keeps them without allocating
-      auto drag_at = [this, at](const hsrod::OverdampedRod &moved, hsrod::RodDrag &out) {
-        const Clock::time_point substep_drag_start = Clock::now();
-        at->substep_geometry = at->geometry;
-        at->substep_geometry.positions = moved.positions;
-        drag_->hydrodynamics().loads(at->substep_geometry, out);
-        cost_.drag_seconds += std::chrono::duration<double>(Clock::now() - substep_drag_start).count();
-      };
-      try {
-        hsrod::GuardedStepReport &report = scratch.report;
-        hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_,
-                                guards_by_rod_[entry.first], report);
-        account_guard_report("rod " + std::to_string(entry.first), report, substeps);
-      } catch (const std::exception &e) {
-        char msg[768];
-        std::snprintf(msg, sizeof(msg), "fix rod/implicit: rod %d at step " BIGINT_FORMAT ": %s", entry.first,
-                      update->ntimestep, e.what());
-        error->all(FLERR, msg);
-      }
-    } else {
-      solver.step(rod, drag, dt, scene_walls, &walls, scratch.result);
-    }
-    stepped_rods_.push_back(entry.first);  // its bond state (strain, energy) on demand
-    // A step that would carry a sphere centre out of the box (the outlet,
-    // or any non-periodic face) is taken only up to the face: the rod is
-    // held there, whole, instead of LIGGGHTS dropping its spheres one by one.
-    const int face = leaving_face(rod.positions, domain->boxlo, domain->boxhi, domain->periodicity);
-    if (face >= 0) {
-      held_rods_.insert(entry.first);
-      report_held_at_face("rod " + std::to_string(entry.first), face);
-      hold_rod_at_face(spheres, before, rod.positions);
-      continue;
-    }
-    largest = std::max(largest, result.largest_displacement / geometry.sphere_diameter);
-    wall_force += result.wall_force;
-    if (result.wall_contact) contacts++;
-    RodContactRecord &record = contacts_by_rod_[entry.first];
-    record.touching = result.wall_contact;
-    record.ever_touched = record.ever_touched || result.wall_contact;
-    record.wall_force = result.wall_force;
-    record.largest_wall_force = std::max(record.largest_wall_force, result.wall_force);
-
-    scatter_rod(spheres, rod, before, result, drag);
+    step_rod_alone(entry.first, entry.second, walls, totals);
   }
-  StepTotals totals;
   joint_strain_ = joint_energy_ = 0.0;
   for (const std::vector<int> &cluster : clusters)
     if (cluster.size() > 1) step_cluster(gather, cluster, walls, totals);
-  largest = std::max(largest, totals.largest);
-  wall_force += totals.wall_force;
-  contacts += totals.contacts;
-  substeps = std::max(substeps, totals.substeps);
-  rod_contacts_ = totals.rod_contacts;
-  rod_contact_force_ = totals.rod_contact_force;
-  // Joint workspaces of clusters that no longer exist are dropped (a cache:
-  // a fresh one gives the same step), their statistics kept for the report.
-  for (auto it = solvers_by_cluster_.begin(); it != solvers_by_cluster_.end();) {
-    if (std::find(clusters.begin(), clusters.end(), it->first) != clusters.end()) {
-      ++it;
-      continue;
-    }
-    hsrod::accumulate(retired_statistics_, it->second.statistics());
-    guards_by_cluster_.erase(it->first);
-    it = solvers_by_cluster_.erase(it);
-  }
+  retire_stale_clusters(clusters);
   ++cost_.steps;
   cost_.total_seconds += seconds_since(step_start);
-  largest_displacement_ = largest;
-  wall_force_ = wall_force;
-  contacts_ = contacts;
-  substeps_ = substeps;
+  largest_displacement_ = totals.largest;
+  wall_force_ = totals.wall_force;
+  contacts_ = totals.contacts;
+  substeps_ = totals.substeps;
+  rod_contacts_ = totals.rod_contacts;
+  rod_contact_force_ = totals.rod_contact_force;
   bond_state_fresh_ = false;
   bonds_->implicit_step_taken();
-  if (!guard_ && largest > max_displacement_ && !warned_ && comm->me == 0) {
+  if (!guard_ && totals.largest > max_displacement_ && !warned_ && comm->me == 0) {
     char msg[256];
     std::snprintf(msg, sizeof(msg),
                   "fix rod/implicit: a sphere moved %.3g diameters in one step (> max_displacement %.3g): the step "
-                  "is stable but may be inaccurate; reduce the timestep", largest, max_displacement_);
+                  "is stable but may be inaccurate; reduce the timestep", totals.largest, max_displacement_);
     error->warning(FLERR, msg);
     warned_ = true;
   }
 }
 
-// The cost model of the run (issue 13): time per step and per sphere-step,
-// and where it went.
+// The cost model of the run: time per step and per sphere-step, and where
+// it went.
 void FixRodImplicit::post_run() {
   if (cost_.steps == 0) return;
   cost_.solver = hsrod::difference(solver_statistics(), solver_statistics_at_setup_);

@@ -17,6 +17,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 
 #include "fix.h"
 
+#include "implicit_partners.h"
 #include "rod_accounting.h"
 #include "rod_assembly.h"
 
@@ -24,6 +25,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 #include "dynamics/overdamped_rod_step.h"
 #include "dynamics/step_cost_report.h"
 
+#include <chrono>
 #include <map>
 #include <memory>
 #include <set>
@@ -40,7 +42,7 @@ struct RodContactRecord {
   double largest_wall_force = 0.0;  // over the run [N]
 };
 
-class FixRodImplicit : public Fix {
+class FixRodImplicit : public Fix, public PartnerIntegrator {
  public:
   // Contact history of rod (molecule) `mol`, or null if unknown.
   const RodContactRecord *contact_record(int mol) const {
@@ -51,7 +53,7 @@ class FixRodImplicit : public Fix {
   FixRodImplicit(class LAMMPS *, int, char **);
   // Whether this fix integrates the work of fix `fix_id` (its bonds or drag
   // fix); the partners ask at their init() (implicit_partners.h).
-  bool names_partner(const char *fix_id) const;
+  bool names_partner(const char *fix_id) const override;
   int setmask();
   void init();
   void setup(int);
@@ -117,7 +119,7 @@ class FixRodImplicit : public Fix {
   hsrod::StepCost cost_;
   hsrod::OverdampedSolverStatistics solver_statistics_at_setup_;
   hsrod::OverdampedSolverStatistics solver_statistics() const;
-  // Several rods (issue 11): Hertz contact with regularised Coulomb friction
+  // Several rods: Hertz contact with regularised Coulomb friction
   // between spheres of different rods inside the implicit step, and the
   // model's hydrodynamic interaction between rods (level 3); rods that touch
   // or interact are stepped together (fix_rod_implicit_clusters.cpp).
@@ -139,6 +141,14 @@ class FixRodImplicit : public Fix {
   std::vector<std::vector<int>> step_clusters(const RodGather &gather) const;
   void step_cluster(const RodGather &gather, const std::vector<int> &molecules,
                     const hsrod::WallContactParameters &walls, StepTotals &totals);
+  void retire_stale_clusters(const std::vector<std::vector<int>> &clusters);
+  // A rod alone (fix_rod_implicit_rod_step.cpp).
+  hsrod::WallContactParameters wall_contact_parameters() const;
+  void evaluate_rod_drag(int molecule, RodScratch &scratch);
+  void step_rod_alone(int molecule, const std::vector<GatheredSphere> &spheres,
+                      const hsrod::WallContactParameters &walls, StepTotals &totals);
+  using Clock = std::chrono::steady_clock;
+  static double seconds_since(Clock::time_point start);
   bool reported_;                // set-up report printed once, not per run
   void resolve_partners();
   void parse_keywords(int narg, char **arg);  // fix_rod_implicit_keywords.cpp

@@ -78,8 +78,6 @@ std::vector<std::vector<int>> FixRodImplicit::step_clusters(const RodGather &gat
 
 void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int> &molecules,
                                   const hsrod::WallContactParameters &walls, StepTotals &totals) {
-  using Clock = std::chrono::steady_clock;
-  const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   hsrod::RodHydrodynamics &hydro = drag_->hydrodynamics();
   const int first = molecules.front();
   if (held_rods_.count(first)) {
@@ -256,4 +254,18 @@ void FixRodImplicit::report_held_at_face(const std::string &who, int face) {
                 update->ntimestep, update->get_cur_time());
   if (screen) fputs(msg, screen);
   if (logfile) fputs(msg, logfile);
+}
+
+// Joint workspaces of clusters that no longer exist are dropped (a cache:
+// a fresh one gives the same step), their statistics kept for the report.
+void FixRodImplicit::retire_stale_clusters(const std::vector<std::vector<int>> &clusters) {
+  for (auto it = solvers_by_cluster_.begin(); it != solvers_by_cluster_.end();) {
+    if (std::find(clusters.begin(), clusters.end(), it->first) != clusters.end()) {
+      ++it;
+      continue;
+    }
+    hsrod::accumulate(retired_statistics_, it->second.statistics());
+    guards_by_cluster_.erase(it->first);
+    it = solvers_by_cluster_.erase(it);
+  }
 }

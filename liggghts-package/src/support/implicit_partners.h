@@ -1,6 +1,6 @@
 /* ----------------------------------------------------------------------
-   hsrod - who integrates a rod fix's work (issue 9, item 4: narrow,
-   explicit interfaces between styles).
+   hsrod - who integrates a rod fix's work (a narrow, explicit interface
+   between styles).
 
    fix rod/implicit takes over the work of two other fixes: the bond loads
    and orientation update of fix rod/bonds and the drag force of fix
@@ -19,6 +19,16 @@ namespace LAMMPS_NS {
 
 class Error;
 class Modify;
+
+// What an integrator that takes over other fixes' work declares (fix
+// rod/implicit implements it); support code asks through this interface, so
+// it needs no style's header.
+class PartnerIntegrator {
+ public:
+  virtual ~PartnerIntegrator() = default;
+  // Whether this integrator does the work of fix `fix_id`.
+  virtual bool names_partner(const char *fix_id) const = 0;
+};
 
 // The ID of the fix rod/implicit that names fix `partner_id` as its bonds
 // or drag fix, or null if none does; error->all if more than one does.

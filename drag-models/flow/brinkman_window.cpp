@@ -56,7 +56,21 @@ WindowLattice WindowLattice::shifted(double dx_, double dy_) const {
 BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLattice& lattice,
                                double viscosity)
     : lattice_(lattice), gap_height_(geometry.gap_height()), viscosity_(viscosity) {
-  const WindowLattice& g = lattice_;
+  check_lattice(lattice_);
+  if (!(viscosity > 0.0)) throw std::invalid_argument("BrinkmanWindow: viscosity must be > 0 Pa s");
+  number_unknowns(geometry);
+  const int n = unknowns_ + static_cast<int>(std::count_if(pressure_unknown_.begin(), pressure_unknown_.end(),
+                                                           [](int k) { return k >= 0; }));
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(static_cast<std::size_t>(n) * 7);
+  add_momentum_rows(geometry, t);
+  add_continuity_rows(t);
+  Eigen::SparseMatrix<double> a(n, n);
+  a.setFromTriplets(t.begin(), t.end());
+  lu_ = std::make_shared<const Factorisation>(a);
+}
+
+void BrinkmanWindow::check_lattice(const WindowLattice& g) {
   if (g.nx < 3 || g.ny < 3 || !(g.h > 0.0))
     throw std::invalid_argument("BrinkmanWindow: need at least 3 x 3 cells of positive size");
   if ((!g.x_faces.empty() && static_cast<int>(g.x_faces.size()) != g.nx + 1) ||
@@ -66,120 +80,129 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
     if (!(g.dx(i) > 0.0)) throw std::invalid_argument("BrinkmanWindow: x faces must increase");
   for (int j = 0; j < g.ny; ++j)
     if (!(g.dy(j) > 0.0)) throw std::invalid_argument("BrinkmanWindow: y faces must increase");
-  if (!(viscosity > 0.0)) throw std::invalid_argument("BrinkmanWindow: viscosity must be > 0 Pa s");
-  const double H = gap_height_;
-  auto fluid = [&](const Eigen::Vector2d& p) {
-    return geometry.signed_distance(p.x(), p.y()) > 1e-6 * g.h;
-  };
-  auto u_at = [&](int i, int j) { return i * g.ny + j; };        // (nx+1) x ny
-  auto v_at = [&](int i, int j) { return i * (g.ny + 1) + j; };  // nx x (ny+1)
-  auto cell_at = [&](int i, int j) { return i * g.ny + j; };
+}
 
-  // Velocity unknowns: interior fluid nodes (the window edges carry u' = 0).
-  // Control area of a node: the spacing to its neighbours' midpoints.
+// Velocity unknowns: interior fluid nodes (the window edges carry u' = 0),
+// then pressure unknowns: the cells with an open face. Control area of a
+// velocity node: the spacing to its neighbours' midpoints.
+void BrinkmanWindow::number_unknowns(const ChannelGeometry& geometry) {
+  const WindowLattice& g = lattice_;
+  const double H = gap_height_;
+  auto fluid = [&](const Eigen::Vector2d& p) { return geometry.signed_distance(p.x(), p.y()) > 1e-6 * g.h; };
   std::vector<double> scale;
   u_unknown_.assign((g.nx + 1) * g.ny, -1);
   v_unknown_.assign(g.nx * (g.ny + 1), -1);
   for (int i = 1; i < g.nx; ++i)
     for (int j = 0; j < g.ny; ++j)
       if (fluid(g.u_position(i, j))) {
-        u_unknown_[u_at(i, j)] = unknowns_;
+        u_unknown_[u_index(i, j)] = unknowns_;
         nodes_.push_back({g.u_position(i, j), 0, unknowns_++});
-        scale.push_back(H / (viscosity * (g.x_centre(i) - g.x_centre(i - 1)) * g.dy(j)));
+        scale.push_back(H / (viscosity_ * (g.x_centre(i) - g.x_centre(i - 1)) * g.dy(j)));
       } else {
         has_walls_ = true;
       }
   for (int i = 0; i < g.nx; ++i)
     for (int j = 1; j < g.ny; ++j)
       if (fluid(g.v_position(i, j))) {
-        v_unknown_[v_at(i, j)] = unknowns_;
+        v_unknown_[v_index(i, j)] = unknowns_;
         nodes_.push_back({g.v_position(i, j), 1, unknowns_++});
-        scale.push_back(H / (viscosity * g.dx(i) * (g.y_centre(j) - g.y_centre(j - 1))));
+        scale.push_back(H / (viscosity_ * g.dx(i) * (g.y_centre(j) - g.y_centre(j - 1))));
       } else {
         has_walls_ = true;
       }
   if (unknowns_ == 0) throw std::invalid_argument("BrinkmanWindow: the window holds no fluid");
   force_scale_ = Eigen::Map<const Eigen::VectorXd>(scale.data(), unknowns_);
-
-  // Pressure cells: those with an open face.
-  std::vector<int> pressure(g.nx * g.ny, -1);
+  pressure_unknown_.assign(g.nx * g.ny, -1);
   int n = unknowns_;
   for (int i = 0; i < g.nx; ++i)
     for (int j = 0; j < g.ny; ++j)
-      if (u_unknown_[u_at(i, j)] >= 0 || u_unknown_[u_at(i + 1, j)] >= 0 || v_unknown_[v_at(i, j)] >= 0 ||
-          v_unknown_[v_at(i, j + 1)] >= 0)
-        pressure[cell_at(i, j)] = n++;
+      if (u_unknown_[u_index(i, j)] >= 0 || u_unknown_[u_index(i + 1, j)] >= 0 || v_unknown_[v_index(i, j)] >= 0 ||
+          v_unknown_[v_index(i, j + 1)] >= 0)
+        pressure_unknown_[cell_index(i, j)] = n++;
+}
 
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(static_cast<std::size_t>(n) * 7);
-  // Momentum rows: -lap(u) + 12 u + grad p (lengths in H). Along each
-  // axis the neighbours lie at the node spacings (unequal on a graded
-  // lattice: the three-point second difference of line_stencils.h), or at
-  // a wall crossing closer than that (Shortley-Weller), or at the window
-  // edge half a cell away (for the component parallel to the edge).
-  auto momentum = [&](int row, const Eigen::Vector2d& p, int comp, int i, int j) {
-    double diag = 12.0;
-    for (int axis = 0; axis < 2; ++axis) {
-      double dist[2];
-      int nb[2];
-      for (int side = 0; side < 2; ++side) {
-        const int s = side == 0 ? -1 : 1;
-        const Eigen::Vector2d dir = axis == 0 ? Eigen::Vector2d(s, 0) : Eigen::Vector2d(0, s);
-        const int ni = i + (axis == 0 ? s : 0), nj = j + (axis == 1 ? s : 0);
-        // Distance to the neighbouring node along this line, or to the edge.
-        bool edge = false;
-        double spacing;
-        if (comp == 0) {
-          if (axis == 0) spacing = s < 0 ? g.dx(i - 1) : g.dx(i);  // u nodes on x faces 1..nx-1
-          else if (nj < 0 || nj >= g.ny) edge = true, spacing = 0.5 * g.dy(j);
-          else spacing = std::abs(g.y_centre(nj) - g.y_centre(j));
-        } else {
-          if (axis == 1) spacing = s < 0 ? g.dy(j - 1) : g.dy(j);
-          else if (ni < 0 || ni >= g.nx) edge = true, spacing = 0.5 * g.dx(i);
-          else spacing = std::abs(g.x_centre(ni) - g.x_centre(i));
-        }
-        nb[side] = -1;
-        dist[side] = spacing;
-        // A wall just beyond the window edge (within a cell) still counts.
-        const double reach = edge ? 2.0 * spacing : spacing;
-        const double wall = geometry.ray_distance_to_wall(p, dir, reach);
-        if (wall <= reach) {
-          has_walls_ = true;
-          dist[side] = std::max(wall, kMinWallFraction * reach);
-          continue;
-        }
-        if (edge) continue;
-        nb[side] = comp == 0 ? u_unknown_[u_at(ni, nj)] : v_unknown_[v_at(ni, nj)];
+// Momentum row of node (i, j) of component comp at p: -lap(u) + 12 u (lengths
+// in H). Along each axis the neighbours lie at the node spacings (unequal on
+// a graded lattice: the three-point second difference of line_stencils.h),
+// or at a wall crossing closer than that (Shortley-Weller), or at the window
+// edge half a cell away (for the component parallel to the edge).
+void BrinkmanWindow::add_momentum_row(const ChannelGeometry& geometry, int row, const Eigen::Vector2d& p, int comp,
+                                      int i, int j, std::vector<Eigen::Triplet<double>>& t) {
+  const WindowLattice& g = lattice_;
+  const double H = gap_height_;
+  double diag = 12.0;
+  for (int axis = 0; axis < 2; ++axis) {
+    double dist[2];
+    int nb[2];
+    for (int side = 0; side < 2; ++side) {
+      const int s = side == 0 ? -1 : 1;
+      const Eigen::Vector2d dir = axis == 0 ? Eigen::Vector2d(s, 0) : Eigen::Vector2d(0, s);
+      const int ni = i + (axis == 0 ? s : 0), nj = j + (axis == 1 ? s : 0);
+      // Distance to the neighbouring node along this line, or to the edge.
+      bool edge = false;
+      double spacing;
+      if (comp == 0) {
+        if (axis == 0) spacing = s < 0 ? g.dx(i - 1) : g.dx(i);  // u nodes on x faces 1..nx-1
+        else if (nj < 0 || nj >= g.ny) edge = true, spacing = 0.5 * g.dy(j);
+        else spacing = std::abs(g.y_centre(nj) - g.y_centre(j));
+      } else {
+        if (axis == 1) spacing = s < 0 ? g.dy(j - 1) : g.dy(j);
+        else if (ni < 0 || ni >= g.nx) edge = true, spacing = 0.5 * g.dx(i);
+        else spacing = std::abs(g.x_centre(ni) - g.x_centre(i));
       }
-      const LineWeights w = second_difference(dist[0] / H, dist[1] / H);
-      diag -= w.self;
-      if (nb[0] >= 0) t.emplace_back(row, nb[0], -w.minus);
-      if (nb[1] >= 0) t.emplace_back(row, nb[1], -w.plus);
+      nb[side] = -1;
+      dist[side] = spacing;
+      // A wall just beyond the window edge (within a cell) still counts.
+      const double reach = edge ? 2.0 * spacing : spacing;
+      const double wall = geometry.ray_distance_to_wall(p, dir, reach);
+      if (wall <= reach) {
+        has_walls_ = true;
+        dist[side] = std::max(wall, kMinWallFraction * reach);
+        continue;
+      }
+      if (edge) continue;
+      nb[side] = comp == 0 ? u_unknown_[u_index(ni, nj)] : v_unknown_[v_index(ni, nj)];
     }
-    t.emplace_back(row, row, diag);
-  };
+    const LineWeights w = second_difference(dist[0] / H, dist[1] / H);
+    diag -= w.self;
+    if (nb[0] >= 0) t.emplace_back(row, nb[0], -w.minus);
+    if (nb[1] >= 0) t.emplace_back(row, nb[1], -w.plus);
+  }
+  t.emplace_back(row, row, diag);
+}
+
+// Momentum rows of every velocity unknown, with the pressure gradient (in H).
+void BrinkmanWindow::add_momentum_rows(const ChannelGeometry& geometry, std::vector<Eigen::Triplet<double>>& t) {
+  const WindowLattice& g = lattice_;
+  const double H = gap_height_;
+  const std::vector<int>& pressure = pressure_unknown_;
   for (int i = 1; i < g.nx; ++i)
     for (int j = 0; j < g.ny; ++j) {
-      const int r = u_unknown_[u_at(i, j)];
+      const int r = u_unknown_[u_index(i, j)];
       if (r < 0) continue;
-      momentum(r, g.u_position(i, j), 0, i, j);
+      add_momentum_row(geometry, r, g.u_position(i, j), 0, i, j, t);
       const double inv = H / (g.x_centre(i) - g.x_centre(i - 1));
-      t.emplace_back(r, pressure[cell_at(i, j)], inv);
-      t.emplace_back(r, pressure[cell_at(i - 1, j)], -inv);
+      t.emplace_back(r, pressure[cell_index(i, j)], inv);
+      t.emplace_back(r, pressure[cell_index(i - 1, j)], -inv);
     }
   for (int i = 0; i < g.nx; ++i)
     for (int j = 1; j < g.ny; ++j) {
-      const int r = v_unknown_[v_at(i, j)];
+      const int r = v_unknown_[v_index(i, j)];
       if (r < 0) continue;
-      momentum(r, g.v_position(i, j), 1, i, j);
+      add_momentum_row(geometry, r, g.v_position(i, j), 1, i, j, t);
       const double inv = H / (g.y_centre(j) - g.y_centre(j - 1));
-      t.emplace_back(r, pressure[cell_at(i, j)], inv);
-      t.emplace_back(r, pressure[cell_at(i, j - 1)], -inv);
+      t.emplace_back(r, pressure[cell_index(i, j)], inv);
+      t.emplace_back(r, pressure[cell_index(i, j - 1)], -inv);
     }
+}
 
-  // Continuity (-div u' = 0), except one cell per closed fluid region, where
-  // p' = 0 fixes the free constant (the region's continuity rows sum to zero
-  // because no disturbance flux leaves the window).
+// Continuity (-div u' = 0), except one cell per closed fluid region, where
+// p' = 0 fixes the free constant (the region's continuity rows sum to zero
+// because no disturbance flux leaves the window).
+void BrinkmanWindow::add_continuity_rows(std::vector<Eigen::Triplet<double>>& t) const {
+  const WindowLattice& g = lattice_;
+  const double H = gap_height_;
+  const std::vector<int>& pressure = pressure_unknown_;
   std::vector<char> seen(g.nx * g.ny, 0);
   for (int c0 = 0; c0 < g.nx * g.ny; ++c0) {
     if (pressure[c0] < 0 || seen[c0]) continue;
@@ -190,8 +213,8 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
       const int c = queue.front();
       queue.pop_front();
       const int i = c / g.ny, j = c % g.ny;
-      const int e = u_unknown_[u_at(i + 1, j)], w = u_unknown_[u_at(i, j)];
-      const int no = v_unknown_[v_at(i, j + 1)], so = v_unknown_[v_at(i, j)];
+      const int e = u_unknown_[u_index(i + 1, j)], w = u_unknown_[u_index(i, j)];
+      const int no = v_unknown_[v_index(i, j + 1)], so = v_unknown_[v_index(i, j)];
       if (c != c0) {
         // Scaled by the cell area / h^2 (for a uniform lattice the rows of
         // the unscaled operator), so that the rows of coarse cells do not
@@ -205,7 +228,7 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
       }
       auto visit = [&](bool open, int ni, int nj) {
         if (!open) return;
-        const int nc = cell_at(ni, nj);
+        const int nc = cell_index(ni, nj);
         if (!seen[nc] && pressure[nc] >= 0) {
           seen[nc] = 1;
           queue.push_back(nc);
@@ -217,11 +240,6 @@ BrinkmanWindow::BrinkmanWindow(const ChannelGeometry& geometry, const WindowLatt
       visit(so >= 0 && j > 0, i, j - 1);
     }
   }
-  Eigen::SparseMatrix<double> a(n, n);
-  a.setFromTriplets(t.begin(), t.end());
-  auto lu = std::make_shared<const Factorisation>(a);
-  lu_ = std::move(lu);
-  pressure_unknown_ = std::move(pressure);
 }
 
 BrinkmanWindow BrinkmanWindow::translated(double dx, double dy, bool walls_move_along) const {

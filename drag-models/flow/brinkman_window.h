@@ -149,6 +149,18 @@ class BrinkmanWindow {
   // translations.
   using Factorisation = SparseLuFactors;
   std::shared_ptr<const Factorisation> lu_;
+
+  // Assembly of the system, phase by phase (the constructor).
+  static void check_lattice(const WindowLattice& lattice);
+  void number_unknowns(const ChannelGeometry& geometry);
+  void add_momentum_row(const ChannelGeometry& geometry, int row, const Eigen::Vector2d& position, int component, int i,
+                        int j, std::vector<Eigen::Triplet<double>>& triplets);
+  void add_momentum_rows(const ChannelGeometry& geometry, std::vector<Eigen::Triplet<double>>& triplets);
+  void add_continuity_rows(std::vector<Eigen::Triplet<double>>& triplets) const;
+  // Indices of u nodes ((nx+1) x ny), v nodes (nx x (ny+1)) and cells (nx x ny).
+  int u_index(int i, int j) const { return i * lattice_.ny + j; }
+  int v_index(int i, int j) const { return i * (lattice_.ny + 1) + j; }
+  int cell_index(int i, int j) const { return i * lattice_.ny + j; }
 };
 
 }  // namespace hsrod

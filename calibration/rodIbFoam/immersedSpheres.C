@@ -286,16 +286,16 @@ void immersedSpheres::markSphere(std::size_t k)
                 // n^3 midpoint samples of the cell box (exact for the
                 // axis-aligned hexahedra of blockMesh/refineMesh meshes)
                 label in = 0;
-                const vector span = hi - lo;
+                const vector box = hi - lo;
                 for (label i = 0; i < nSub_; ++i)
                 for (label j = 0; j < nSub_; ++j)
                 for (label l = 0; l < nSub_; ++l)
                 {
                     const point q
                     (
-                        lo.x() + (i + 0.5)*span.x()/nSub_,
-                        lo.y() + (j + 0.5)*span.y()/nSub_,
-                        lo.z() + (l + 0.5)*span.z()/nSub_
+                        lo.x() + (i + 0.5)*box.x()/nSub_,
+                        lo.y() + (j + 0.5)*box.y()/nSub_,
+                        lo.z() + (l + 0.5)*box.z()/nSub_
                     );
                     if (magSqr(q - X) < r*r) ++in;
                 }

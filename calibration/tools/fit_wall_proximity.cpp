@@ -290,7 +290,7 @@ int main(int argc, char** argv) {
         << number(beta_min) << ";\n  w.beta_max = " << number(beta_max)
         << ";\n  return w;\n}\n}  // namespace\n\n"
            "const WallProximityCalibration& WallProximityCalibration::built_in() {\n"
-           "  static const WallProximityCalibration c = [] {\n    WallProximityCalibration c;\n";
+           "  static const WallProximityCalibration fitted = [] {\n    WallProximityCalibration c;\n";
     for (const auto& [name, w] : {std::make_pair("local", fitted.local), std::make_pair("nonlocal", fitted.nonlocal),
                                   std::make_pair("twoway", fitted.twoway)})
       cpp << "    c." << name << " = law(" << number(w.normal) << ", " << number(w.along) << ", " << number(w.screening)
@@ -304,7 +304,7 @@ int main(int argc, char** argv) {
            "    // off near walls and pores and push the dynamic pore passages the wrong way (pore_passage/README.md)\n"
            "    c.local.active = false;\n    c.nonlocal.active = false;\n";
     cpp << "    c.source = \"hsrod_fit_wall_proximity on " << cases_path << " (held out: " << hold_out
-        << ")\";\n    return c;\n  }();\n  return c;\n}\n\n}  // namespace hsrod\n";
+        << ")\";\n    return c;\n  }();\n  return fitted;\n}\n\n}  // namespace hsrod\n";
     std::printf("wrote %s and %s\n", json_path.c_str(), cpp_path.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hsrod_fit_wall_proximity: %s\n", e.what());

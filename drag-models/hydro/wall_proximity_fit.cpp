@@ -28,7 +28,7 @@ WallProximityLaw law(double normal, double along, double screening, double norma
 }  // namespace
 
 const WallProximityCalibration& WallProximityCalibration::built_in() {
-  static const WallProximityCalibration c = [] {
+  static const WallProximityCalibration fitted = [] {
     WallProximityCalibration c;
     c.local = law(1.397891157, 1.985182864, 0.343442561, 0.1586419478, -0.5374957038, -2.038829754, 2.41565438, -0.1628980106, 0.1953114556);
     c.nonlocal = law(1.168291023, 1.270708439, 0.343442561, 0.3224590894, -0.27106038, -3.925715726, 0.8645299038, -0.2304076415, 0.2083627922);
@@ -40,7 +40,7 @@ const WallProximityCalibration& WallProximityCalibration::built_in() {
     c.source = "hsrod_fit_wall_proximity on calibration/data/resolved_geometry_per_sphere.csv (held out: wall_a45_g1.5_b0.300_n5,wall_a0_g0.5_b0.300_n10,pore_a90_g1.5_b0.300_n5)";
     return c;
   }();
-  return c;
+  return fitted;
 }
 
 }  // namespace hsrod

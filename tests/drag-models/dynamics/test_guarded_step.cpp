@@ -515,21 +515,21 @@ struct SlidingOffACylinder {
     return Eigen::Vector3d(5e-4 - rho * std::cos(theta), 5e-4 + rho * std::sin(theta), 10e-6);
   }
   double exact_theta(double t) const { return 2.0 * std::atan(std::tan(0.5 * theta0) * std::exp(lambda * t)); }
-  double theta_of(const OverdampedRod& rod) const {
-    return std::atan2(rod.positions[0].y() - 5e-4, 5e-4 - rod.positions[0].x());
+  double theta_of(const OverdampedRod& state) const {
+    return std::atan2(state.positions[0].y() - 5e-4, 5e-4 - state.positions[0].x());
   }
   // theta after `steps` guarded steps of dt, with `limits`.
   double run(double dt, int steps, const StepGuardLimits& limits, long* substeps = nullptr) {
-    OverdampedRod r = rod;
+    OverdampedRod moved = rod;
     OverdampedRodSolver solver;
     GuardWorkspace workspace;
     for (int k = 0; k < steps; ++k) {
-      const std::vector<Eigen::Vector3d> before = r.positions;
-      const GuardedStepReport report = guarded_rod_step(solver, r, drag, {}, dt, &channel, &walls, limits, workspace);
+      const std::vector<Eigen::Vector3d> before = moved.positions;
+      const GuardedStepReport report = guarded_rod_step(solver, moved, drag, {}, dt, &channel, &walls, limits, workspace);
       if (substeps) *substeps += report.substeps;
-      r.velocities[0] = (r.positions[0] - before[0]) / dt;
+      moved.velocities[0] = (moved.positions[0] - before[0]) / dt;
     }
-    return theta_of(r);
+    return theta_of(moved);
   }
 };
 

@@ -107,7 +107,9 @@ TEST(WallFrictionStep, ReversingLoadAtALargeStepDoesNotChatter) {
       const double v = result.velocities[0].x();
       EXPECT_GE(sign * v, 0.0) << "reversal " << reversal << " step " << k;
       EXPECT_LE(sign * v, load / zeta * 1.0001);
-      if (k == 4) EXPECT_NEAR(v, sign * (load - mu * press) / zeta, 1e-6 * load / zeta);
+      if (k == 4) {
+        EXPECT_NEAR(v, sign * (load - mu * press) / zeta, 1e-6 * load / zeta);
+      }
     }
   }
 }

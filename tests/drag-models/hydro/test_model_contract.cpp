@@ -216,4 +216,4 @@ std::vector<std::string> registered_names() {
 }  // namespace
 
 INSTANTIATE_TEST_SUITE_P(AllRegisteredModels, ModelContract, ::testing::ValuesIn(registered_names()),
-                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+                         [](const ::testing::TestParamInfo<std::string>& param_info) { return param_info.param; });

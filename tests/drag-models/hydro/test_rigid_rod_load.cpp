@@ -47,7 +47,7 @@ TEST(RigidRodLoad, ResistanceReproducesPerSphereLoadsForRigidMotions) {
     model(name)->evaluate(rod, flow, drag);
     const RigidRodLoad rigid = rigid_rod_load(rod, drag);
     const double f_scale = rigid.driving.head<2>().norm(), t_scale = f_scale * 10 * kD;
-    for (const Eigen::Vector3d q : {Eigen::Vector3d(0.01, 0, 0), Eigen::Vector3d(0, 0.01, 0),
+    for (const Eigen::Vector3d& q : {Eigen::Vector3d(0.01, 0, 0), Eigen::Vector3d(0, 0.01, 0),
                                     Eigen::Vector3d(0, 0, 300.0), Eigen::Vector3d(0.004, -0.007, -150.0)}) {
       const Eigen::Vector3d expected = sphere_loads(rod, drag, rigid, q), got = rigid.load(q);
       EXPECT_NEAR(got.x(), expected.x(), 1e-12 * f_scale) << name;

@@ -36,10 +36,9 @@ MacGrid grid_with_cell_size(const ChannelGeometry& geo, double h, long max_cells
   const double nx = std::ceil(geo.length() / h - 1e-9), ny = std::ceil(geo.width() / h - 1e-9);
   if (!(nx * ny <= static_cast<double>(max_cells))) {
     std::ostringstream msg;
-    msg << "GridBrinkmanFlow: grid of " << nx << " x " << ny << " cells (cell size " << h
-        << " m) exceeds max_cells = " << max_cells
-        << "; choose a larger cell_size or fewer cells_per_wall_layer / cells_across_opening";
-    throw std::invalid_argument(msg.str());
+    msg << "background-flow grid of " << nx << " x " << ny << " cells (cell size " << h
+        << " m) exceeds max_cells = " << max_cells;
+    throw GridSolveTooLarge(msg.str());
   }
   MacGrid g;
   g.nx = std::max(2, static_cast<int>(nx));
@@ -47,6 +46,35 @@ MacGrid grid_with_cell_size(const ChannelGeometry& geo, double h, long max_cells
   g.hx = geo.length() / g.nx / geo.gap_height();
   g.hy = geo.width() / g.ny / geo.gap_height();
   return g;
+}
+
+// Why a grid over the limits is that fine, for the refusal's message: the
+// narrowest opening sets the cell size (a nearly closed pore was otherwise
+// refused with the names of options the user cannot set). Finds by
+// bisection the narrowest opening whose grid would fit.
+std::string opening_note(const ChannelGeometry& geo, const GridBrinkmanOptions& o) {
+  if (o.cell_size > 0.0 || o.wall_layer == GridBrinkmanOptions::WallLayer::kResolved) return "";
+  const ChannelGeometry scaled = scaled_planform(geo);
+  auto fits = [&](double h) {
+    const double nx = std::ceil(geo.length() / h - 1e-9), ny = std::ceil(geo.width() / h - 1e-9);
+    if (!(nx * ny <= static_cast<double>(o.max_cells))) return false;
+    const GridSolveEstimate e = estimate_grid_solve(scaled, grid_with_cell_size(geo, h, o.max_cells), o.include_inertia);
+    return e.memory_bytes <= o.max_memory_bytes && e.seconds <= o.max_predicted_seconds;
+  };
+  const double opening = geo.narrowest_opening();
+  double coarse = std::min(geo.length(), geo.width()) / 4.0, fine = opening / o.cells_across_opening;
+  if (!fits(coarse)) return "";
+  for (int i = 0; i < 60 && coarse / fine > 1.001; ++i) {
+    const double mid = std::sqrt(coarse * fine);
+    (fits(mid) ? coarse : fine) = mid;
+  }
+  std::ostringstream msg;
+  msg.precision(3);
+  msg << "; the cell size is set by the narrowest opening of the planform, " << opening << " m across (resolved by "
+      << o.cells_across_opening << " cells): in this " << geo.length() << " x " << geo.width()
+      << " m planform the grid fits for openings of at least " << coarse * o.cells_across_opening
+      << " m (widen the pore or the gap between obstacles, or shorten the channel)";
+  return msg.str();
 }
 
 }  // namespace
@@ -109,7 +137,12 @@ GridBrinkmanFlow::GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidP
                                                     geometry.gap_height() / fluid.dynamic_viscosity
                                               : 0.0;
   const ChannelGeometry scaled = scaled_planform(geometry);
-  const GridChoice choice = choose_grid(geometry, options);
+  GridChoice choice;
+  try {
+    choice = choose_grid(geometry, options);
+  } catch (const GridSolveTooLarge& e) {
+    throw GridSolveTooLarge(e.what() + opening_note(geometry, options));
+  }
   const MacGrid& grid = choice.grid;
   exponential_wall_layer_ = choice.exponential_wall_layer;
   estimate_ = choice.estimate;
@@ -133,8 +166,12 @@ GridBrinkmanFlow::GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidP
   }
 
   // Bounded work: refuse before the first allocation of solver size.
-  check_grid_solve_budget(estimate_, GridSolveLimits{options.max_cells, options.max_memory_bytes,
-                                                     options.max_predicted_seconds});
+  try {
+    check_grid_solve_budget(estimate_, GridSolveLimits{options.max_cells, options.max_memory_bytes,
+                                                       options.max_predicted_seconds});
+  } catch (const GridSolveTooLarge& e) {
+    throw GridSolveTooLarge(e.what() + opening_note(geometry, options));
+  }
   const auto start = std::chrono::steady_clock::now();
   BrinkmanGridSettings settings;
   settings.exponential_wall_layer = exponential_wall_layer_;

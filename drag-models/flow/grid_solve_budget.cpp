@@ -66,12 +66,12 @@ void check_grid_solve_budget(const GridSolveEstimate& e, const GridSolveLimits& 
   }
   if (e.memory_bytes > limits.max_memory_bytes) {
     s << "predicted memory exceeds the limit of " << limits.max_memory_bytes / 1e9
-      << " GB (raise the flow memory limit, or coarsen the grid)";
+      << " GB";
     refuse(s.str());
   }
   if (e.seconds > limits.max_seconds) {
     s << "predicted time exceeds the limit of " << limits.max_seconds
-      << " s (raise the flow time limit, or coarsen the grid)";
+      << " s";
     refuse(s.str());
   }
 }

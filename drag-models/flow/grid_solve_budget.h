@@ -1,6 +1,6 @@
 // Bounded work for the background-flow grid solve (issue 10): the cost of a
 // solve is predicted from the grid alone, before anything is allocated, and
-// checked against limits the user can raise.
+// checked against limits the caller can raise.
 //
 // The sparse LU of the MAC saddle-point system (brinkman_grid_solver.cpp)
 // dominates time and memory. Its cost model (measured on this project's
@@ -47,8 +47,8 @@ class GridSolveTooLarge : public std::invalid_argument {
 GridSolveEstimate estimate_grid_solve(const ChannelGeometry& geometry, const MacGrid& grid,
                                       bool inertia);
 
-// Throws GridSolveTooLarge naming the exceeded limit, the prediction and the
-// option that raises it.
+// Throws GridSolveTooLarge naming the exceeded limit and the prediction
+// (the caller knows which of its settings raises the limit).
 void check_grid_solve_budget(const GridSolveEstimate& estimate, const GridSolveLimits& limits);
 
 }  // namespace hsrod

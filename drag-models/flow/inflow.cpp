@@ -1,5 +1,6 @@
 #include "flow/inflow.h"
 
+#include "common/math_constants.h"
 #include "flow/brinkman_profile.h"
 
 #include <cmath>
@@ -56,6 +57,30 @@ double mean_velocity_for_channel_reynolds(double reynolds, const ChannelGeometry
   const BrinkmanChannelProfile profile(geometry.width(), geometry.gap_height());
   const double centreline = u_max / 1.5;  // gap average of the parabola = 2/3 of its peak
   return centreline / profile.centreline_to_mean();
+}
+
+void check_inflow_regime(double mean_velocity, const ChannelGeometry& geometry, const FluidProperties& fluid) {
+  const double reynolds = fluid.density * mean_velocity * hydraulic_diameter(geometry) / fluid.dynamic_viscosity;
+  const double sphere_force = 3.0 * kPi * fluid.dynamic_viscosity * geometry.gap_height() * mean_velocity;
+  std::ostringstream msg;
+  msg << "mean inflow velocity U = " << mean_velocity << " m/s (channel Reynolds number rho U D_h / mu = " << reynolds
+      << ", mu = " << fluid.dynamic_viscosity << " Pa s, rho_f = " << fluid.density << " kg/m3)";
+  if (!(std::isfinite(mean_velocity) && mean_velocity > 0.0 && std::isfinite(reynolds) &&
+        std::isfinite(sphere_force))) {
+    msg << " is not representable: the drag on a sphere, 3 pi mu H U = " << sphere_force
+        << " N, overflows double precision";
+    throw std::invalid_argument(msg.str());
+  }
+  if (reynolds > kLaminarChannelReynolds) {
+    msg << " exceeds the laminar limit Re = " << kLaminarChannelReynolds
+        << " of channel flow: the model is creeping (Stokes-Brinkman) flow";
+    throw std::invalid_argument(msg.str());
+  }
+  if (mean_velocity > kIncompressibleSpeed) {
+    msg << " exceeds " << kIncompressibleSpeed
+        << " m/s (Mach 0.3 in water): the model is incompressible flow";
+    throw std::invalid_argument(msg.str());
+  }
 }
 
 }  // namespace hsrod

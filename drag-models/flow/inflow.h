@@ -39,4 +39,18 @@ double hydraulic_diameter(const ChannelGeometry& geometry);
 double mean_velocity_for_channel_reynolds(double reynolds, const ChannelGeometry& geometry,
                                           const FluidProperties& fluid);
 
+// The regime the model holds in: incompressible creeping (Stokes-Brinkman)
+// flow. Laminar channel flow ends near Re = rho U D_h / mu = 2300 (mean
+// velocity; the classical transition of duct flow), and a liquid is
+// incompressible only well below its speed of sound (Mach 0.3 of water's
+// 1480 m/s, the slowest common liquids ~900 m/s, gives 444 m/s).
+inline constexpr double kLaminarChannelReynolds = 2300.0;  // [-]
+inline constexpr double kIncompressibleSpeed = 444.0;      // [m/s]
+
+// Throws std::invalid_argument when a mean inflow velocity U [m/s] is not
+// finite, would make the flow turbulent or compressible, or gives forces
+// 3 pi mu H U on a sphere of the gap's size that overflow: each message
+// states U, the Reynolds number and the limit.
+void check_inflow_regime(double mean_velocity, const ChannelGeometry& geometry, const FluidProperties& fluid);
+
 }  // namespace hsrod

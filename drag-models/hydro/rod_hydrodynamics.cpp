@@ -1,10 +1,12 @@
 #include "hydro/rod_hydrodynamics.h"
 
+#include "flow/inflow.h"
 #include "flow/make_background_flow.h"
 #include "geometry/pore_constriction.h"
 #include "hydro/explicit_drag_limit.h"
 
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
 
 namespace hsrod {
@@ -29,6 +31,20 @@ RodHydrodynamics::RodHydrodynamics(const SceneSpec& scene, const ModelSpec& mode
     case SceneSpec::InflowKind::reynolds:
       inflow = Inflow::mean_velocity(mean_velocity_for_channel_reynolds(scene.inflow_value, *geometry_, scene.fluid));
       break;
+  }
+  // Before the flow solve: an inflow outside the model's regime, named by
+  // the keyword that set it (reynolds 1e300 would fail later as a
+  // sphere moving inf d per step).
+  try {
+    check_inflow_regime(inflow.mean_velocity_in(*geometry_), *geometry_, scene.fluid);
+  } catch (const std::invalid_argument& e) {
+    static const char* const kKeyword[] = {"mean_velocity", "flow_rate", "reynolds"};
+    std::ostringstream msg;
+    msg << "inflow " << kKeyword[static_cast<int>(scene.inflow_kind)] << " " << scene.inflow_value;
+    if (scene.inflow_kind == SceneSpec::InflowKind::reynolds)  // U = Re mu / (rho_f D_h) ...: both set it
+      msg << " (with viscosity " << scene.fluid.dynamic_viscosity << " and fluid_density " << scene.fluid.density << ")";
+    msg << ": " << e.what();
+    throw std::invalid_argument(msg.str());
   }
   BackgroundFlowOptions options;
   options.grid.include_inertia = scene.inertia;

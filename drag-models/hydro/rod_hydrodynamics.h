@@ -80,6 +80,7 @@ class RodHydrodynamics {
   const ChannelGeometry& geometry() const { return *geometry_; }
   const BackgroundFlow& flow() const { return *flow_; }
   double gap_bottom() const { return gap_bottom_; }  // z of the lower gap wall [m]
+  double viscosity() const { return viscosity_; }     // mu [Pa s]
   int spheres_per_section() const { return spec_.spheres_per_section; }
   const ModelSpec& model_spec() const { return spec_; }
   // True when x [m] lies in the fluid: inside the planform and the gap.

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace hsrod {
 
@@ -39,6 +40,16 @@ RodStabilityLimits compute_stability_limits(const RodLayout& layout, const Spher
   const Eigen::MatrixXd scaled = inv_sqrt_mass.asDiagonal() * stiffness * inv_sqrt_mass.asDiagonal();
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(scaled, Eigen::EigenvaluesOnly);
   const double omega2 = eig.eigenvalues().maxCoeff();
+  // E ~ 1e300 Pa overflows k / m: every limit would read 0 s and the run
+  // would go on with nonsense. Physical moduli are < ~1e12 Pa.
+  if (!(std::isfinite(omega2) && omega2 > 0.0 && std::isfinite(std::sqrt(omega2)))) {
+    char msg[384];
+    std::snprintf(msg, sizeof(msg),
+                  "youngs_modulus %g Pa gives bonds whose highest frequency sqrt(k/m) is not representable in double "
+                  "precision (spheres of d = %g m, rho = %g kg/m3); physical moduli are below ~1e12 Pa",
+                  sphere.youngs_modulus, sphere.diameter, sphere.density);
+    throw std::invalid_argument(msg);
+  }
   lim.highest_bond_frequency = std::sqrt(std::max(omega2, 0.0));
   lim.explicit_bond_limit = lim.highest_bond_frequency > 0.0 ? 2.0 / lim.highest_bond_frequency : 0.0;
   lim.damping_included = with_damping || !(bond.damping_ratio > 0.0);

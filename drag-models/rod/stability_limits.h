@@ -44,6 +44,8 @@ struct RodStabilityLimits {
 // (an eigenvalue bisection on the one-step map, ~7e8 instructions, most of
 // a short run's start-up): for callers whose bonds are integrated
 // implicitly, where the explicit limit does not bind.
+// Throws std::invalid_argument when the modulus puts omega_max out of
+// double precision's range (the limits would all read 0 s).
 RodStabilityLimits compute_stability_limits(const RodLayout& layout, const SphereMaterial& sphere,
                                             const BeamBondMaterial& bond, double viscosity, bool with_damping = true);
 

@@ -8,7 +8,10 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -130,7 +133,14 @@ bool CaseProcess::wait(int timeout_ms) {
   };
   const auto call_start = std::chrono::steady_clock::now();
   while (true) {
-    int slice = setup_.timeout_seconds > 0.0 ? 200 : -1;  // re-check the case deadline every 0.2 s
+    // Wake at the case's deadline (to the millisecond), at the latest every
+    // 0.2 s; timeouts below the old fixed 0.2 s slice were not enforced.
+    int slice = -1;
+    if (setup_.timeout_seconds > 0.0) {
+      const double left_s =
+          setup_.timeout_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+      slice = std::clamp(static_cast<int>(std::ceil(left_s * 1000.0)), 1, 200);
+    }
     if (timeout_ms >= 0) {
       const int left = timeout_ms - static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(
                                                          std::chrono::steady_clock::now() - call_start)

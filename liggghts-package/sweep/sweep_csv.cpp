@@ -117,6 +117,12 @@ ResultFile::ResultFile(const std::string &path, const CaseGrid &grid, const std:
         throw file_error(path, where + "case " + std::to_string(id) + " has value '" + field + "' where this sweep has '" +
                                    value + "' (other --var lists?); use --fresh or another --output");
     }
+    // The status column: a row that is neither ok nor failed (an edited or
+    // foreign file) must not count as a finished case.
+    std::getline(fields, field, ',');
+    if (field != "ok" && field != "failed")
+      throw file_error(path, where + "case " + std::to_string(id) + " has status '" + field +
+                                 "' (expected ok or failed); use --fresh or another --output");
     if (!finished_.insert(id).second)
       throw file_error(path, where + "case " + std::to_string(id) + " appears twice");
   }

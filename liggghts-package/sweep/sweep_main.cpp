@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -159,6 +160,19 @@ void print_rank_accounting(const std::vector<double> &all, int ranks) {
 
 }  // namespace
 
+// --case-timeout: finite seconds >= 0 (CLI::NonNegativeNumber lets nan
+// through, which then meant no limit). "" when valid, else the message.
+static std::string check_case_timeout(std::string &text) {
+  const std::string expected = "--case-timeout must be a finite number of seconds >= 0 (0: none), got " + text;
+  try {
+    std::size_t used = 0;
+    const double seconds = std::stod(text, &used);
+    return used == text.size() && std::isfinite(seconds) && seconds >= 0.0 ? std::string() : expected;
+  } catch (const std::exception &) {
+    return expected;
+  }
+}
+
 int main(int argc, char **argv) {
   MPI_Init(&argc, &argv);
   int rank = 0, ranks = 1;
@@ -181,7 +195,7 @@ int main(int argc, char **argv) {
       ->capture_default_str();
   app.add_option("--workdir", options.workdir, "working directory of the cases (default: the current one)");
   app.add_option("--case-timeout", options.case_timeout, "wall seconds after which a case is killed and failed (0: none)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Validator(check_case_timeout, "SECONDS >= 0"));
   app.add_flag("--fresh", options.fresh, "delete an existing result file and start over");
   app.add_flag("--keep-logs", options.keep_logs, "keep the screen log of every case (failed cases always keep theirs)");
   app.add_flag("--list", options.list, "print the cases and exit");

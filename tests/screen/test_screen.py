@@ -73,6 +73,29 @@ check("OVERLAP: 3 sphere-wall overlap(s) with the script's fix wall/gran walls (
       "3 spheres overlapping the bottom wall by 1/3 of their radius flagged")
 check("prediction skipped" in report, "no prediction from an overlapping start")
 
+# Bad scene files: the error names the file, the key and the type (the JSON
+# library's raw "type_error.302 type must be number, but is string" named
+# neither), and an inflow.U outside the model's regime is refused before the
+# script runs (1e300 m/s failed as a sphere moving inf d per step).
+import json
+scene_values = json.load(open(os.path.join(case, "scene.json")))
+for name, change, expected in (
+        ("string_U", lambda j: j["inflow"].update(U="fast"),
+         "ERROR: hsrod screen: scene file 'bad_string_U.json': inflow.U must be a number, got string \"fast\""),
+        ("string_mu", lambda j: j.setdefault("fluid", {}).update(mu="1e-3"),
+         "ERROR: hsrod screen: scene file 'bad_string_mu.json': fluid.mu must be a number, got string \"1e-3\""),
+        ("huge_U", lambda j: j["inflow"].update(U=1e300),
+         "ERROR: hsrod screen: scene file 'bad_huge_U.json': inflow.U: mean inflow velocity U = 1e+300 m/s")):
+    bad = json.loads(json.dumps(scene_values))
+    change(bad)
+    with open(os.path.join(case, f"bad_{name}.json"), "w") as f:
+        json.dump(bad, f)
+    done = subprocess.run([hsrod, "-in", "in.liggghts", "-log", "none", "-var", "hsrod_screen", f"bad_{name}.json"],
+                          cwd=case, capture_output=True, text=True, timeout=120)
+    first = [l for l in done.stdout.splitlines() if l.startswith("ERROR")][:1]
+    check(done.returncode != 0 and first and first[0].startswith(expected) and "json.exception" not in done.stdout,
+          f"scene file with {name}: refused naming the key: {first}")
+
 if failures:
     sys.exit(f"{len(failures)} check(s) failed")
 print("all checks passed")

@@ -10,7 +10,8 @@ Usage: test_sweep.py <test> <hsrod-sweep> <hsrod> <mpirun> <work-dir>
            ends with every case exactly once and the rows of an
            uninterrupted sweep.
   failure  a case with E < 0 is recorded with LIGGGHTS' ERROR message and a
-           case that never ends is killed at --case-timeout; the others run.
+           case that never ends is killed at --case-timeout; the others run;
+           a timeout of 0.03 s is enforced to the millisecond.
   regime   the regime-map path of examples/regime-map/run_maps.sh on two
            cases of examples/clogging/in.clogging (stiff rod, alpha = 0):
            fix rod/outcome read as a measure gives the paper's classes,
@@ -188,6 +189,14 @@ elif test == "failure":
     slow = table.get(("15e6", "1000000000"), {})
     check(slow.get("status") == "failed" and "timed out after --case-timeout" in slow.get("error", ""),
           f"endless case killed at the timeout: {slow.get('error')!r}")
+    # A timeout below the tool's old 0.2 s poll slice is enforced too: a
+    # case of 20000 steps (~1 s) at --case-timeout 0.03
+    # is killed at 0.03 s (it ran to completion before).
+    run("short_timeout.csv", 1, ["--var", "E", "15e6", "--var", "steps", "20000", "--case-timeout", "0.03"])
+    short = rows("short_timeout.csv")
+    check(len(short) == 1 and short[0]["status"] == "failed" and "timed out after --case-timeout 0.03 s" in
+          short[0]["error"] and float(short[0]["wall_s"]) < 0.1,
+          f"a 0.03 s timeout kills a ~1 s case within 0.1 s: {short}")
     log_dir = os.path.join(work, "failure_logs")
     kept = sorted(f for f in os.listdir(log_dir) if f.startswith("case"))
     check(len(kept) == 3, f"logs kept for the 3 failed cases only: {kept}")

@@ -122,3 +122,21 @@ TEST(SweepResultFile, ResumesDropsATornLineAndRejectsAnotherSweep) {
   EXPECT_THROW(ResultFile(path, other, {"x"}), std::runtime_error);
   std::filesystem::remove(path);
 }
+
+// A row whose status is neither ok nor failed (an edited file, a foreign
+// tool's) was taken as a finished case on resume and never run.
+TEST(SweepResultFile, RefusesARowWithAnotherStatus) {
+  const std::string path = (std::filesystem::temp_directory_path() / "hsrod_sweep_status_test.csv").string();
+  std::filesystem::remove(path);
+  const CaseGrid grid({{"E", {"1", "2"}}});
+  { ResultFile file(path, grid, {"x"}); }
+  { std::ofstream(path, std::ios::app) << "1,2,running,0.7,,0,0,0\n"; }
+  try {
+    ResultFile file(path, grid, {"x"});
+    ADD_FAILURE() << "a row of status 'running' was accepted as finished";
+  } catch (const std::runtime_error &e) {
+    EXPECT_NE(std::string(e.what()).find("line 2: case 1 has status 'running' (expected ok or failed)"),
+              std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
+}

@@ -39,6 +39,21 @@ using namespace LAMMPS_NS;
 
 CreateRod::CreateRod(LAMMPS *instance) : Pointers(instance) {}
 
+namespace {
+// Spheres of one rod may touch, never overlap: an overlapping chain has
+// bonds shorter than their own section (and no calibrated drag), and was
+// refused only later by the step's bond-strain guard. spacing 0 does not
+// stand for d: the keyword is omitted for touching spheres.
+void check_spacing(Error *error, const hsrod::RodSpec &spec) {
+  if (spec.spacing >= (1.0 - 1e-9) * spec.sphere_diameter) return;
+  char msg[256];
+  std::snprintf(msg, sizeof(msg),
+                "create_rod: spacing %g m must be >= the sphere diameter d = %g m (the rod's spheres may touch, not "
+                "overlap; omit spacing for touching spheres)", spec.spacing, spec.sphere_diameter);
+  error->all(FLERR, msg);
+}
+}  // namespace
+
 void CreateRod::command(int narg, char **arg) {
   if (domain->box_exist == 0) error->all(FLERR, "create_rod command before simulation box is defined");
   if (!atom->molecular || !atom->molecule_flag || !atom->radius_flag || !atom->rmass_flag)
@@ -49,6 +64,7 @@ void CreateRod::command(int narg, char **arg) {
   int type = 0, mol = 0, bond_type = 1;
   double density = -1.0, offset = 0.0, angle_deg = 0.0;
   bool have[5] = {false, false, false, false, false};  // spheres diameter type density centre
+  bool have_spacing = false;  // spacing given (it must then be >= d)
 
   for (int iarg = 0; iarg < narg;) {
     const char *key = arg[iarg];
@@ -95,6 +111,7 @@ void CreateRod::command(int narg, char **arg) {
     } else if (strcmp(key, "spacing") == 0) {
       need(1);
       spec.spacing = parse_number(error, "create_rod", key, arg[iarg + 1]);
+      have_spacing = true;
       iarg += 2;
     } else if (strcmp(key, "section") == 0) {
       need(1);
@@ -144,7 +161,7 @@ void CreateRod::command(int narg, char **arg) {
     std::snprintf(msg, sizeof(msg), "create_rod: type %d out of range 1..%d", type, atom->ntypes);
     error->all(FLERR, msg);
   }
-  if (spec.spacing < 0.0) error->all(FLERR, "create_rod: spacing must be >= 0 m (0 = one diameter)");
+  if (have_spacing) check_spacing(error, spec);
 
   const double pi = hsrod::kPi;
   spec.angle = angle_deg * pi / 180.0;

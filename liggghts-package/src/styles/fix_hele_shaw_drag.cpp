@@ -20,6 +20,7 @@
 #include "neighbor_choice.h"
 #include "rod_assembly.h"
 #include "rod_gather.h"
+#include "run_signals.h"
 
 #include "hydro/rod_hydrodynamics.h"
 
@@ -69,7 +70,13 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *instance, int narg, char **arg)
     char msg[512];
     std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: background flow solve interrupted (SIGINT/SIGTERM): %s",
                   e.what());
-    error->one(FLERR, msg);
+    // As error->one, but with the exit code a stopped run documents
+    // (128 + signal; error->one's is 1). No waiting for ranks still solving.
+    if (screen) std::fprintf(screen, "ERROR on proc %d: %s (%s:%d)\n", comm->me, msg, __FILE__, __LINE__);
+    if (logfile) std::fprintf(logfile, "ERROR on proc %d: %s (%s:%d)\n", comm->me, msg, __FILE__, __LINE__);
+    if (screen) std::fflush(screen);
+    if (logfile) std::fflush(logfile);
+    MPI_Abort(world, hsrod::quit_exit_code());
   } catch (const std::exception &e) {
     char msg[512];
     std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s", e.what());

@@ -52,6 +52,16 @@ void FixHeleShawDrag::check_confinement_before_solve(const hsrod::SceneSpec &sce
                   d, scene.gap_height);
     error->all(FLERR, msg);
   }
+  // The pore's opening W - 2R against the spheres (a pore closed
+  // to 0.2 um was refused later for the size of the flow grid it needs).
+  if (scene.pore_radius > 0.0 && scene.width - 2.0 * scene.pore_radius < d) {
+    std::snprintf(msg, sizeof(msg),
+                  "fix hele_shaw/drag: pore opening W - 2R = %g m (pore radius %g m, channel width %g m) is narrower "
+                  "than the rod's spheres (d = %g m): the rod cannot enter the pore; pore radius must be <= "
+                  "(W - d)/2 = %g m", scene.width - 2.0 * scene.pore_radius, scene.pore_radius, scene.width, d,
+                  0.5 * (scene.width - d));
+    error->all(FLERR, msg);
+  }
   try {
     const hsrod::ConfinementTable table = model.coefficients_file.empty()
                                               ? hsrod::ConfinementTable::default_table()

@@ -6,7 +6,7 @@
      origin x0 y0 z0     lower corner: inlet plane, side wall, lower gap wall [m] (default: box lo)
      pore R x            pore constriction: z-cylinders of radius R on both side walls at x [m]
      cylinder x y R      any other z-cylinder obstacle [m] (repeatable)
-     viscosity mu        [Pa s] (default 1e-3)
+     viscosity mu        [Pa s], in [1e-6, 1e8] (default 1e-3)
      fluid_density rho   [kg/m3] (default 1000)
      mean_velocity U | flow_rate Q | reynolds Re    inflow (one required)
      model NAME|auto     a registered model (hydro/model_registry.h) or auto (default auto)
@@ -43,6 +43,20 @@ using namespace LAMMPS_NS;
 
 namespace {
 const char *const kStyle = "fix hele_shaw/drag";
+constexpr double kLowestViscosity = 1e-6;  // [Pa s], below any gas
+constexpr double kHighestViscosity = 1e8;  // [Pa s], above any melt the model is meant for
+
+// Gases ~1e-5, water 1e-3, glycerol 1.4, polymer melts up to ~1e6 Pa s:
+// outside this range the drag over- or underflows the bonds.
+double viscosity_in_range(LAMMPS_NS::Error *error, double viscosity) {
+  if (!(viscosity >= kLowestViscosity && viscosity <= kHighestViscosity)) {
+    char msg[256];
+    std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: viscosity must be in [%g, %g] Pa s (got %g)",
+                  kLowestViscosity, kHighestViscosity, viscosity);
+    error->all(FLERR, msg);
+  }
+  return viscosity;
+}
 }
 
 void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &scene, hsrod::ModelSpec &model) {
@@ -91,7 +105,7 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
       scene.cylinders.push_back({number(1), number(2), number(3)});
     } else if (strcmp(key, "viscosity") == 0) {
       need(1);
-      scene.fluid.dynamic_viscosity = positive(key, number(1), " Pa s");
+      scene.fluid.dynamic_viscosity = viscosity_in_range(error, number(1));
     } else if (strcmp(key, "fluid_density") == 0) {
       need(1);
       scene.fluid.density = positive(key, number(1), " kg/m3");

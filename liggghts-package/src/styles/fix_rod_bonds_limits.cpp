@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <string>
 
 using namespace LAMMPS_NS;
@@ -30,9 +31,13 @@ void FixRodBonds::ensure_limits(double d, double density, bool damped) {
   chain.number_of_sections = 20;  // omega_max of a chain has converged by 20 spheres
   chain.sphere_diameter = d;
   const hsrod::BeamBondMaterial bond = bond_set_.material(0.5 * d, 0.5 * d);
-  limits_ = hsrod::compute_stability_limits(hsrod::make_rod_layout(chain),
-                                            {d, density, bond_set_.youngs_modulus, bond_set_.poisson_ratio}, bond, 0.0,
-                                            damped);
+  try {
+    limits_ = hsrod::compute_stability_limits(hsrod::make_rod_layout(chain),
+                                              {d, density, bond_set_.youngs_modulus, bond_set_.poisson_ratio}, bond,
+                                              0.0, damped);
+  } catch (const std::exception &e) {
+    error->all(FLERR, (std::string("fix rod/bonds: ") + e.what()).c_str());
+  }
   limits_diameter_ = d;
   limits_density_ = density;
 }

@@ -24,6 +24,7 @@
 #include "rod_gather.h"
 #include "update.h"
 
+#include "dynamics/implicit_conditioning.h"
 #include "dynamics/overdamped_rod_step.h"
 #include "hydro/rod_hydrodynamics.h"
 #include "rod/rod_bond_set.h"
@@ -130,6 +131,28 @@ void FixRodImplicit::init() {
   }
 }
 
+// The bonds against the drag over one step, dt k / zeta: beyond
+// kMaxImplicitStiffnessRatio the solve cannot carry the rod's rigid motion
+// in double precision (dynamics/implicit_conditioning.h): the rod would
+// freeze or blow up, and the accuracy guard would blame the timestep.
+void FixRodImplicit::check_conditioning() {
+  const double bond_limit = bonds_->explicit_bond_limit_known(), drag_limit = drag_->explicit_drag_limit();
+  if (!(bond_limit > 0.0 && drag_limit > 0.0 && drag_limit < 1e299)) return;  // no rods yet
+  const double ratio = hsrod::implicit_stiffness_ratio(update->dt, drag_limit, bond_limit);
+  if (ratio <= hsrod::kMaxImplicitStiffnessRatio) return;
+  const double modulus = bonds_->bond_set().youngs_modulus;
+  char msg[1024];
+  std::snprintf(msg, sizeof(msg),
+                "fix rod/implicit: the bonds of fix %s (youngs_modulus %g Pa) are too stiff for the drag of fix %s "
+                "(viscosity %g Pa s) at timestep %g s: dt k/zeta = %.3g exceeds %.0e, beyond which the implicit solve "
+                "loses the rod's rigid motion to round-off (it would freeze or blow up); use youngs_modulus <= %.3g Pa "
+                "(the rod is already rigid on this step's scale from dt k/zeta ~ 1e4) or timestep <= %.3g s",
+                bonds_id_.c_str(), modulus, drag_id_.c_str(), drag_->hydrodynamics().viscosity(), update->dt, ratio,
+                hsrod::kMaxImplicitStiffnessRatio, hsrod::largest_well_conditioned_modulus(modulus, ratio),
+                update->dt / (ratio / hsrod::kMaxImplicitStiffnessRatio));
+  error->all(FLERR, msg);
+}
+
 hsrod::OverdampedSolverStatistics FixRodImplicit::solver_statistics() const {
   hsrod::OverdampedSolverStatistics sum;
   for (const auto &entry : solvers_by_rod_) hsrod::accumulate(sum, entry.second.statistics());
@@ -151,6 +174,7 @@ void FixRodImplicit::setup(int) {
   });
   // Rods are counted afresh at each run's start: what the script deleted
   // between runs is its business; what goes missing during a run is an error.
+  check_conditioning();
   census_ = RodCensus();
   substeps_taken_ = trials_rejected_ = 0;
   cost_ = hsrod::StepCost();

@@ -48,4 +48,6 @@ void install_run_signal_handlers() {
 
 int quit_signal_received() { return g_quit_signal; }
 
+int quit_exit_code() { return 128 + (g_quit_signal != 0 ? static_cast<int>(g_quit_signal) : SIGINT); }
+
 }  // namespace hsrod

@@ -1,4 +1,5 @@
-// Signal handling of the hsrod executable (issue 10).
+// Signal handling of the hsrod executable (installed by its main; in the
+// styles' library so that a style stopped by a signal exits as documented).
 //   SIGINT / SIGTERM: the run stops at the next step (LIGGGHTS'
 //     SignalHandler::request_quit, which the background-flow solve also
 //     polls), without writing LIGGGHTS' restart_forced_liggghts_<step>.data
@@ -14,5 +15,8 @@ namespace hsrod {
 void install_run_signal_handlers();
 // The SIGINT/SIGTERM number received so far, 0 if none.
 int quit_signal_received();
+// Exit code of a process stopped by that signal, 128 + signal as a shell
+// reports it (SIGINT when the handlers are not installed, e.g. in-process).
+int quit_exit_code();
 
 }  // namespace hsrod

@@ -157,6 +157,9 @@ struct BondTurn {
 // restoring law (small rotations) no longer describes the joint, and near
 // 180 deg its rotation-vector torque flips direction.
 constexpr double kFoldedBondDegrees = 90.0;
+// Beyond it a refusal for displacement names the strain, not the step:
+// 10 % axial strain is far outside the small-strain beam bond [-].
+constexpr double kStrongStrain = 0.1;
 
 BondTurn largest_bond_turn(const std::vector<Eigen::Vector3d>& positions,
                            const std::vector<Eigen::Quaterniond>& orientations, const std::vector<RodBond>& bonds) {
@@ -695,12 +698,18 @@ void guarded_rod_step(OverdampedRodSolver& solver, OverdampedRod& rod, const Rod
           if (a.bond_strain > limits.max_bond_strain && a.displacement <= limits.max_displacement &&
               a.strain_change <= limits.max_strain_change)
             m << "; the rod itself is over-strained (the loads stretch it beyond small-strain bonds at any step: "
-                 "a stiffer rod or a slower flow)";
+                 "a stiffer rod (youngs_modulus) or a slower flow (the drag's inflow or viscosity))";
           else if (turn.degrees > kFoldedBondDegrees)
             m << "; the rod is folded at the substep's start: the bond between spheres " << turn.i << " and "
               << turn.j << " is turned " << turn.degrees << " deg against its spheres' frames (beam bonds are "
               << "small-rotation elements; a smaller timestep does not undo the fold: a stiffer rod, a slower "
               << "flow, or the state before the fold)";
+          else if (a.bond_strain > kStrongStrain)
+            // Not the step: a rod strained this far by the loads moves its
+            // spheres faster than the flow (a whip), at any step.
+            m << "; the rod is strained to " << a.bond_strain << " by the loads (bonds are small-strain elements): "
+              << "a stiffer rod (youngs_modulus) or a slower flow (the drag's inflow or viscosity), else a smaller "
+                 "timestep";
           else
             m << "; use a smaller timestep";
           throw StepRefused(m.str());

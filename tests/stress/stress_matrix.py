@@ -9,6 +9,11 @@ each case:
   failed   anything else: a crash (signal, no ERROR line), a hang past the
            time bound (CPU seconds, --timeout; 6x that in wall time), or exit
            code 0 with non-finite or lost output.
+A generated family of combinations (extreme moduli, viscosities, inflows,
+pore openings, spacings; each value accepted alone) is judged further: a
+refusal must name the varied keyword and must not blame the timestep or
+name options the fix does not accept, and a run with exit code 0 must move
+the rod (else "silent"); both count as failed.
 Usage:  stress_matrix.py HSROD [--short] [--out RESULTS.md] [--jobs N] [--progress FILE]
 --short is the ctest subset (label `stress`, < 2 min); the default is the
 full matrix. Exit code 1 if any case failed. --progress appends each case's
@@ -140,7 +145,7 @@ def classify(hsrod, text, timeout):
     errors = [l for l in out.splitlines() if l.startswith("ERROR")]
     if r.returncode != 0:
         if errors and r.returncode > 0:
-            return "refused", errors[0][:160]
+            return "refused", errors[0][:600]
         return "failed", f"rc {r.returncode} without a clean ERROR line"
     if errors:
         return "failed", "rc 0 but an ERROR line: " + errors[0][:120]
@@ -216,6 +221,10 @@ def largest_difference(case, reference):
 def check(hsrod, name, text, timeout):
     """Classify one case and, when it passed, check its trajectory against the refined run."""
     r = classify(hsrod, text, time_bound(text, timeout))
+    if name in EXPECTED_KEYWORD:
+        verdict = combination_verdict(hsrod, text, time_bound(text, timeout), (name,) + r, EXPECTED_KEYWORD[name])
+        if verdict[1] != r[0] or verdict[1] == "refused":
+            return verdict
     if r[0] != "passed":
         return (name,) + r
     k = REFINE_COSTLY if ("max_substeps 4" in text or "spheres 10000 " in text) else REFINE
@@ -243,6 +252,74 @@ def check(hsrod, name, text, timeout):
                 f"dangle {da:.2g} deg (dt/{k} ends elsewhere: {refs_differ})")
     dx, dy, da = largest_difference(r[2], ref[2])
     return name, "passed", f"{r[1]}; vs dt/{k}: dx {dx * 1e6:.2g} um, dy {dy * 1e6:.2g} um, dangle {da:.2g} deg"
+
+
+# Combinations of values each keyword accepts alone (extreme moduli,
+# viscosities, inflows, pore openings, spacings). Each case names the
+# keyword(s) a refusal must name; a refusal that blames the timestep or
+# names options the fix does not accept is misleading, and a run that ends
+# with exit code 0 but a rod that did not move is silent nonsense: both
+# count as failed (combination_verdict).
+MISLEADING = re.compile(r"cell_size|cells_per_wall_layer|cells_across_opening|raise the flow|coarsen the grid|"
+                        r"json\.exception")
+# A refusal whose advice is a smaller timestep is right when the scene at
+# dt/10 passes; when it does not, the step was blamed for another cause.
+BLAMES_STEP = re.compile(r"smaller timestep")
+EXPECTED_KEYWORD = {}  # case name -> regex the refusal must contain
+
+
+def combinations(short):
+    """(name, scene, keyword regex, expected rod motion [m]) of the generated
+    family. The motion is the scene's ~4 um over its 20 steps (U ~ 0.05 m/s
+    at reynolds 2), scaled with the case's inflow; below 1e-10 m the thermo
+    output (8 digits of x ~ 1e-4 m) cannot show it."""
+    family = []
+    moduli = ["1e13", "1e15", "1e16", "1e18", "1e20", "1e25", "1e50", "1e100", "1e200", "1e299", "1e300"]
+    viscosities = ["1e-300", "1e-9", "1e-6", "1e-2", "1", "1e2", "1e8", "1e9", "1e300"]
+    inflows = [("mean_velocity", v) for v in ("1e-12", "1e-6", "1", "100", "1e3", "1e300")] + \
+              [("flow_rate", v) for v in ("1e-20", "1e-9", "1e-6", "1e300")] + \
+              [("reynolds", v) for v in ("1e-9", "100", "2300", "3000", "1e300")]
+    pores = ["90e-6", "95e-6", "98e-6", "98.4e-6", "98.6e-6", "99e-6", "99.9e-6"]
+    spacings = ["0", "1e-9", "1e-6", "2.9e-6", "3e-6", "4.5e-6", "6e-6", "3e-5"]
+    if short:
+        moduli, viscosities, pores, spacings = ["1e25", "1e100", "1e300"], ["1e-300", "1e8"], ["99.9e-6"], ["1e-6"]
+        inflows = [("reynolds", "1e300"), ("flow_rate", "1e300")]
+    for E in moduli:
+        family.append((f"combination youngs_modulus {E}", scene(E=E, steps=20), r"youngs_modulus", 4e-6))
+    for mu in viscosities:
+        family.append((f"combination viscosity {mu} with reynolds 2",
+                       scene(steps=20, extra_drag=f"viscosity {mu}"), r"viscosity", 4e-6 * float(mu) / 1e-3))
+    for key, value in inflows:
+        text = scene(steps=20).replace("hele_shaw/drag reynolds 2 ", f"hele_shaw/drag {key} {value} ")
+        U = {"mean_velocity": float(value), "flow_rate": float(value) / (200e-6 * 20e-6),
+             "reynolds": 0.0295 * float(value) / 2}[key]
+        family.append((f"combination {key} {value}", text, key, 20 * 4e-6 * U))
+    for R in pores:
+        family.append((f"combination pore {R}", scene(steps=20, pore=f"pore {R} 300e-6"), r"pore|opening", 4e-6))
+    for sp in spacings:
+        family.append((f"combination spacing {sp}", scene(steps=20, angle=f"0 spacing {sp}"), r"spacing", 4e-6))
+    return family
+
+
+def combination_verdict(hsrod, text, timeout, result, expected):
+    """A combination case's result, failed when its refusal misleads or its
+    run silently froze (moved less than a tenth of its expected motion)."""
+    name, kind, why = result[:3]
+    keyword, motion = expected
+    if kind == "refused":
+        if BLAMES_STEP.search(why) and not MISLEADING.search(why):
+            finer = classify(hsrod, refined(text, 10), 10 * timeout)
+            if finer[0] == "passed":
+                return name, kind, why + " (dt/10 passes: the advice holds)"
+            return name, "failed", f"misleading error: blames the step, but dt/10 fails too ({finer[1]}): {why}"
+        if MISLEADING.search(why) or not re.search(keyword, why):
+            return name, "failed", f"misleading error (must name {keyword!r}): {why}"
+    elif kind == "passed" and len(result) > 3:
+        rows = result[3]
+        moved = max(abs(r[0] - rows[0][0]) + abs(r[1] - rows[0][1]) for r in rows)
+        if motion > 1e-10 and moved < 0.1 * motion:
+            return name, "failed", f"silent: exit code 0 but the rod moved {moved:.3g} m of ~{motion:.3g} m ({why})"
+    return name, kind, why
 
 
 def matrix(short):
@@ -274,6 +351,9 @@ def matrix(short):
             "gap": "box height"}
     for key, value in itertools.product(keys if not short else ["E", "angle", "dt"], bad if not short else ["nan", "-1"]):
         cases.append((f"{keys[key]} = {value}", scene(steps=5, **{key: value})))
+    for name, text, keyword, motion in combinations(short):
+        EXPECTED_KEYWORD[name] = (keyword, motion)
+        cases.append((name, text))
     return cases
 
 

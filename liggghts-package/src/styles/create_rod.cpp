@@ -173,10 +173,12 @@ void CreateRod::command(int narg, char **arg) {
     for (int a = 0; a < 3; a++) {
       if (domain->periodicity[a]) continue;
       if (s.position[a] < domain->boxlo[a] || s.position[a] >= domain->boxhi[a]) {
-        char msg[256];
+        char msg[384];
         std::snprintf(msg, sizeof(msg),
-                      "create_rod: sphere at (%g %g %g) is outside the simulation box in direction %c",
-                      s.position[0], s.position[1], s.position[2], "xyz"[a]);
+                      "create_rod: sphere at (%g %g %g) is outside the simulation box in direction %c (a rod of %d "
+                      "spheres at spacing %g m is %g m long; check centre, angle, spheres and spacing)",
+                      s.position[0], s.position[1], s.position[2], "xyz"[a], spec.number_of_sections,
+                      spec.effective_spacing(), spec.rod_length());
         error->all(FLERR, msg);
       }
     }

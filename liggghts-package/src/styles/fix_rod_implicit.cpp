@@ -135,11 +135,11 @@ void FixRodImplicit::init() {
 // kMaxImplicitStiffnessRatio the solve cannot carry the rod's rigid motion
 // in double precision (dynamics/implicit_conditioning.h): the rod would
 // freeze or blow up, and the accuracy guard would blame the timestep.
-void FixRodImplicit::check_conditioning() {
+double FixRodImplicit::check_conditioning() {
   const double bond_limit = bonds_->explicit_bond_limit_known(), drag_limit = drag_->explicit_drag_limit();
-  if (!(bond_limit > 0.0 && drag_limit > 0.0 && drag_limit < 1e299)) return;  // no rods yet
+  if (!(bond_limit > 0.0 && drag_limit > 0.0 && drag_limit < 1e299)) return 0.0;  // no rods yet
   const double ratio = hsrod::implicit_stiffness_ratio(update->dt, drag_limit, bond_limit);
-  if (ratio <= hsrod::kMaxImplicitStiffnessRatio) return;
+  if (ratio <= hsrod::kMaxImplicitStiffnessRatio) return ratio;
   const double modulus = bonds_->bond_set().youngs_modulus;
   char msg[1024];
   std::snprintf(msg, sizeof(msg),
@@ -151,6 +151,7 @@ void FixRodImplicit::check_conditioning() {
                 hsrod::kMaxImplicitStiffnessRatio, hsrod::largest_well_conditioned_modulus(modulus, ratio),
                 update->dt / (ratio / hsrod::kMaxImplicitStiffnessRatio));
   error->all(FLERR, msg);
+  return ratio;
 }
 
 hsrod::OverdampedSolverStatistics FixRodImplicit::solver_statistics() const {
@@ -174,7 +175,7 @@ void FixRodImplicit::setup(int) {
   });
   // Rods are counted afresh at each run's start: what the script deleted
   // between runs is its business; what goes missing during a run is an error.
-  check_conditioning();
+  const double stiffness_ratio = check_conditioning();
   census_ = RodCensus();
   substeps_taken_ = trials_rejected_ = 0;
   cost_ = hsrod::StepCost();
@@ -185,10 +186,12 @@ void FixRodImplicit::setup(int) {
     char msg[512];
     std::snprintf(msg, sizeof(msg),
                   "fix rod/implicit: overdamped linearly implicit step dt = %g s; bonds, drag and wall contacts "
-                  "implicit (explicit bond limit%s %g s: dt is %.0f x larger)\n",
+                  "implicit (explicit bond limit%s %g s: dt is %.0f x larger; bonds against drag dt k/zeta = %.3g, "
+                  "limit %.0e)\n",
                   update->dt, bonds_->bond_limit_damped() ? "" : " without bond damping",
                   bonds_->explicit_bond_limit_known(),
-                  bonds_->explicit_bond_limit_known() > 0 ? update->dt / bonds_->explicit_bond_limit_known() : 0.0);
+                  bonds_->explicit_bond_limit_known() > 0 ? update->dt / bonds_->explicit_bond_limit_known() : 0.0,
+                  stiffness_ratio, hsrod::kMaxImplicitStiffnessRatio);
     if (screen) fputs(msg, screen);
     if (logfile) fputs(msg, logfile);
   }

@@ -151,7 +151,7 @@ class FixRodImplicit : public Fix, public PartnerIntegrator {
   static double seconds_since(Clock::time_point start);
   bool reported_;                // set-up report printed once, not per run
   void resolve_partners();
-  void check_conditioning();  // bonds against drag over one step, at each run's start
+  double check_conditioning();  // bonds against drag over one step (dt k/zeta), at each run's start
   void parse_keywords(int narg, char **arg);  // fix_rod_implicit_keywords.cpp
   RodCensus census_;             // spheres per rod as first seen: lost atoms are an error
   RodGather gather_;             // the rods every step (its buffers kept between steps)

@@ -32,36 +32,7 @@ Eigen::Matrix<double, 12, 1> bond_loads(const SphereState& si, const SphereState
   return loads;
 }
 
-SphereState perturbed(const SphereState& s, int component, double h) {
-  SphereState p = s;
-  if (component < 3) {
-    p.position[component] += h;
-  } else {
-    Eigen::Vector3d phi = Eigen::Vector3d::Zero();
-    phi[component - 3] = h;
-    p.orientation = (quaternion_from_rotation_vector(phi) * s.orientation).normalized();
-  }
-  return p;
-}
-
 }  // namespace
-
-void beam_bond_jacobian(const SphereState& si, const SphereState& sj, const RodBond& bond,
-                        Eigen::Matrix<double, 12, 1>& loads, Eigen::Matrix<double, 12, 12>& jacobian) {
-  loads = bond_loads(si, sj, bond);
-  const double length_step = 1e-7 * bond.rest.rest_length();  // [m]
-  const double angle_step = 1e-7;                              // [rad]
-  for (int c = 0; c < 12; ++c) {
-    const int local = c % 6;
-    const double h = local < 3 ? length_step : angle_step;
-    const bool on_i = c < 6;
-    const SphereState ip = on_i ? perturbed(si, local, h) : si;
-    const SphereState im = on_i ? perturbed(si, local, -h) : si;
-    const SphereState jp = on_i ? sj : perturbed(sj, local, h);
-    const SphereState jm = on_i ? sj : perturbed(sj, local, -h);
-    jacobian.col(c) = (bond_loads(ip, jp, bond) - bond_loads(im, jm, bond)) / (2.0 * h);
-  }
-}
 
 OverdampedRod make_overdamped_rod(const RodLayout& layout, const BeamBondMaterial& material, double sphere_diameter) {
   OverdampedRod rod;

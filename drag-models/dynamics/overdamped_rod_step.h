@@ -219,10 +219,4 @@ inline bool sphere_pair_search_on(const OverdampedRod& rod, const WallContactPar
 // lexicographic order, found through a cell list: O(n log n), not O(n^2).
 std::vector<std::pair<int, int>> nearby_sphere_pairs(const std::vector<Eigen::Vector3d>& positions, double reach);
 
-// Bond loads and their 12x12 Jacobian (d loads / d (x_i, phi_i, x_j, phi_j))
-// by central differences; loads ordered (F_i, T_i, F_j, T_j). The step uses
-// the closed form (rod/beam_bond_jacobian.h); this is its check.
-void beam_bond_jacobian(const SphereState& si, const SphereState& sj, const RodBond& bond,
-                        Eigen::Matrix<double, 12, 1>& loads, Eigen::Matrix<double, 12, 12>& jacobian);
-
 }  // namespace hsrod

@@ -1,4 +1,5 @@
 // hsrod calibration: confinement coefficient fit (see confinement_fit.h).
+#include "common/math_constants.h"
 #include "confinement_fit.h"
 #include "hydro/confinement_forms.h"
 
@@ -17,7 +18,7 @@
 namespace hsrod::calib {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> out;

@@ -1,8 +1,9 @@
+#include "common/math_constants.h"
 #include "level_crosscheck.h"
 
 #include <numeric>
 
-#include "flow/background_flow.h"
+#include "flow/uniform_flow.h"
 #include "hydro/hydrodynamic_model.h"
 #include "hydro/nonlocal_model.h"
 #include "hydro/twoway_near_field.h"
@@ -13,23 +14,7 @@ namespace hsrod::calib {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// Uniform gap-averaged stream along x in a channel far wider than the row.
-class UniformStream : public BackgroundFlow {
- public:
-  UniformStream(double gap_height, double speed) : geometry_(1.0, 1.0, gap_height, -0.5, -0.5), speed_(speed) {}
-  Eigen::Vector2d velocity(double, double) const override { return {speed_, 0.0}; }
-  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
-  double pressure(double, double) const override { return 0.0; }
-  double mean_velocity() const override { return speed_; }
-  const ChannelGeometry& geometry() const override { return geometry_; }
-  std::string description() const override { return "uniform stream (cross-check)"; }
-
- private:
-  ChannelGeometry geometry_;
-  double speed_;
-};
+using hsrod::kPi;
 
 double sum(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); }
 
@@ -50,7 +35,8 @@ RowLoads row_loads(const HydrodynamicModel& model, const HydrodynamicParameters&
   out.parameters = p;
   out.speed = 1e-3;
   const double d = p.sphere_diameter;
-  const UniformStream still(p.gap_height, 0.0), stream(p.gap_height, out.speed);
+  const UniformFlow still = UniformFlow::wide_slit(p.gap_height, Eigen::Vector2d::Zero());
+  const UniformFlow stream = UniformFlow::wide_slit(p.gap_height, {out.speed, 0.0});
   for (int across = 0; across < 2; ++across) {
     RodGeometry& rod = out.rod[across];
     rod.sphere_diameter = d;

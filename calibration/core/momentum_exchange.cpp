@@ -1,4 +1,5 @@
 // hsrod calibration: momentum exchange of coupled runs (see momentum_exchange.h).
+#include "common/math_constants.h"
 #include "momentum_exchange.h"
 
 #include <algorithm>
@@ -10,7 +11,7 @@
 namespace hsrod::calib {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 }
 
 namespace {

@@ -1,10 +1,11 @@
+#include "common/math_constants.h"
 #include "scene_crosscheck.h"
 
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 
-#include "flow/background_flow.h"
+#include "flow/uniform_flow.h"
 #include "flow/make_background_flow.h"
 #include "hydro/hydrodynamic_model.h"
 #include "hydro/local_models.h"
@@ -15,28 +16,7 @@ namespace hsrod::calib {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// Uniform gap-averaged velocity u (zero: fluid at rest) on the given planform:
-// the wide slit of the bent rods (a planform far larger than the rod), or
-// fluid at rest in the channel of a wall / pore case (its walls and pore
-// cylinders stay in the geometry, where levels 4 reflect off them).
-class UniformFlow : public BackgroundFlow {
- public:
-  UniformFlow(ChannelGeometry geometry, Eigen::Vector2d u) : geometry_(std::move(geometry)), u_(u) {}
-  Eigen::Vector2d velocity(double x, double y) const override {
-    return geometry_.is_fluid(x, y) ? u_ : Eigen::Vector2d::Zero();
-  }
-  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
-  double pressure(double, double) const override { return 0.0; }
-  double mean_velocity() const override { return u_.norm(); }
-  const ChannelGeometry& geometry() const override { return geometry_; }
-  std::string description() const override { return "uniform flow (scene cross-check)"; }
-
- private:
-  ChannelGeometry geometry_;
-  Eigen::Vector2d u_;
-};
+using hsrod::kPi;
 
 double number(const CsvRow& r, const std::string& k) {
   const auto it = r.find(k);
@@ -106,10 +86,13 @@ SceneLoad scene_load(const SceneCase& c) {
     const double big = 1000.0 * c.gap_height();
     const ChannelGeometry slit(big, big, c.gap_height(), -0.5 * big, -0.5 * big);
     load.flow =
+        // The wide slit of the bent rods: a planform far larger than the rod.
         std::make_unique<UniformFlow>(slit, c.load == "driving" ? Eigen::Vector2d(c.U * e) : Eigen::Vector2d::Zero());
   } else if (c.load == "driving") {
     load.flow = make_background_flow(channel_of(c), FluidProperties{c.mu, 1000.0}, Inflow::mean_velocity(c.U));
   } else {
+    // Fluid at rest in the channel of a wall / pore case: its walls and pore
+    // cylinders stay in the geometry, where level 4 reflects off them.
     load.flow = std::make_unique<UniformFlow>(channel_of(c), Eigen::Vector2d::Zero());
   }
   load.velocities = Eigen::VectorXd::Zero(3 * n);

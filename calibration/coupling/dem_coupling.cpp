@@ -1,5 +1,6 @@
 // hsrod calibration: DEM side of the coupling (see dem_coupling.h).
 // LIGGGHTS code only: no OpenFOAM header may be included here.
+#include "common/math_constants.h"
 #include "dem_coupling.h"
 
 #include <mpi.h>
@@ -35,7 +36,7 @@ struct DemCoupling::Impl {
 };
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 }
 
 bool DemCoupling::has_package_styles() {

@@ -1,3 +1,4 @@
+#include "common/math_constants.h"
 #include "rod/beam_bond.h"
 
 #include <cmath>
@@ -5,7 +6,7 @@
 namespace hsrod {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 }
 
 double BeamBondMaterial::area() const { return kPi * bond_diameter * bond_diameter / 4.0; }

@@ -17,6 +17,7 @@
 #include <tuple>
 #include <vector>
 
+#include "flow/uniform_flow.h"
 #include "hydro/auto_model_choice.h"
 #include "hydro/model_registry.h"
 #include "level_crosscheck.h"
@@ -150,21 +151,9 @@ TEST(calibration_AutoErrorModel, BuiltInNearWallRecordIsTheRecordedFile) {
 }
 
 namespace {
-// A channel at rest of the wall/pore cross-check's shape (W = 6 H, pore
-// cylinders R = 1.5 H at L/2), beta 0.3.
-class RestingChannel : public hsrod::BackgroundFlow {
- public:
-  explicit RestingChannel(hsrod::ChannelGeometry g) : g_(std::move(g)) {}
-  Eigen::Vector2d velocity(double, double) const override { return Eigen::Vector2d(1e-3, 0.0); }
-  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
-  double pressure(double, double) const override { return 0.0; }
-  double mean_velocity() const override { return 1e-3; }
-  const hsrod::ChannelGeometry& geometry() const override { return g_; }
-  std::string description() const override { return "uniform stream"; }
-
- private:
-  hsrod::ChannelGeometry g_;
-};
+// The stream of 1 mm/s over a channel's planform (zero inside its walls and
+// pore cylinders).
+hsrod::UniformFlow stream_over(hsrod::ChannelGeometry g) { return hsrod::UniformFlow(std::move(g), {1e-3, 0.0}); }
 }  // namespace
 
 // auto reads the near-wall record at the scene's gaps: a rigid row of 5
@@ -177,7 +166,7 @@ TEST(calibration_AutoErrorModel, AutoUsesTheDistanceToWallsAndPores) {
   const hsrod::HydrodynamicParameters p{1e-3, H, d};
   const auto table = hsrod::ConfinementTable::default_table();
   const auto level3 = hsrod::make_hydrodynamic_model("nonlocal", p, table);
-  const RestingChannel pore(hsrod::ChannelGeometry(12 * H, 6 * H, H, 0.0, 0.0, {{6 * H, 0.0, R}, {6 * H, 6 * H, R}}));
+  const hsrod::UniformFlow pore = stream_over(hsrod::ChannelGeometry(12 * H, 6 * H, H, 0.0, 0.0, {{6 * H, 0.0, R}, {6 * H, 6 * H, R}}));
   hsrod::RodGeometry row;
   row.sphere_diameter = d;
   for (int i = 0; i < 5; ++i) row.positions.emplace_back(6 * H + (i - 2) * d, R + 0.5 * d + 0.5 * d + 0.01 * d, 0.5 * H);
@@ -196,7 +185,7 @@ TEST(calibration_AutoErrorModel, AutoUsesTheDistanceToWallsAndPores) {
   EXPECT_GT(near.level_errors[2], 0.10);  // level 3
   EXPECT_NE(near.summary.find("from a pore cylinder"), std::string::npos);
 
-  const RestingChannel wide(hsrod::ChannelGeometry(40 * H, 40 * H, H));
+  const hsrod::UniformFlow wide = stream_over(hsrod::ChannelGeometry(40 * H, 40 * H, H));
   hsrod::RodGeometry middle = row;
   for (auto& x : middle.positions) x += Eigen::Vector3d(14 * H, 20 * H - x.y(), 0.0);
   const auto far = hsrod::choose_auto_model({middle}, wide, 0.3, *level3, 0.0, 0.01, 0.10);

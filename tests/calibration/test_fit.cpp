@@ -7,12 +7,13 @@
 #include <cstdio>
 #include <sstream>
 
+#include "common/math_constants.h"
 #include "confinement_fit.h"
 
 using namespace hsrod::calib;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 const double d = 3e-6, mu = 1e-3;
 
 struct Known {

@@ -15,7 +15,7 @@
 #include <fstream>
 #include <string>
 
-#include "flow/background_flow.h"
+#include "flow/uniform_flow.h"
 #include "hydro/local_models.h"
 #include "hydro/model_registry.h"
 #include "hydro/wall_proximity.h"
@@ -65,26 +65,11 @@ TEST(calibration_WallProximity, BuiltInLawIsTheShippedFit) {
   }
 }
 
-// Fluid at rest in a channel (walls y = 0 and W), for the resistance alone.
-class RestingChannel : public hsrod::BackgroundFlow {
- public:
-  explicit RestingChannel(hsrod::ChannelGeometry g) : g_(std::move(g)) {}
-  Eigen::Vector2d velocity(double, double) const override { return Eigen::Vector2d::Zero(); }
-  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
-  double pressure(double, double) const override { return 0.0; }
-  double mean_velocity() const override { return 0.0; }
-  const hsrod::ChannelGeometry& geometry() const override { return g_; }
-  std::string description() const override { return "fluid at rest"; }
-
- private:
-  hsrod::ChannelGeometry g_;
-};
-
 TEST(calibration_WallProximity, ResistanceStaysPositiveDefiniteAtContactAndUntouchedFarFromWalls) {
   const double d = 3e-6, H = 1e-5;
   const hsrod::HydrodynamicParameters p{1e-3, H, d};
   const auto table = hsrod::ConfinementTable::default_table();
-  const RestingChannel flow(hsrod::ChannelGeometry(40 * H, 20 * H, H));
+  const hsrod::UniformFlow flow(hsrod::ChannelGeometry(40 * H, 20 * H, H), Eigen::Vector2d::Zero(), "fluid at rest");
   for (const char* level : {"twoway"}) {
     for (double gap : {0.0, 0.05 * d, 0.5 * d, 10 * H}) {
       for (double angle : {0.0, 0.3, 1.5707963}) {

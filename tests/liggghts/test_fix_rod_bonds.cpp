@@ -2,6 +2,7 @@
 // theory (static cantilever, axial stiffness, lowest bending frequency),
 // energy conservation without damping and decay with it, and restarts.
 // Reference constants: ../drag-models/rod/euler_bernoulli_reference.txt.
+#include "common/math_constants.h"
 #include "liggghts_session.h"
 
 #include <gtest/gtest.h>
@@ -19,7 +20,7 @@ using hsrod_test::num;
 namespace {
 
 
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 constexpr double kDiameter = 3e-6;      // [m], the pore scene's spheres
 constexpr double kDensity = 1170.0;     // [kg/m3]
 constexpr double kModulus = 15e6;       // [Pa]

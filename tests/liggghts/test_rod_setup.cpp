@@ -1,6 +1,7 @@
 // Making rods (create_rod, read_data, 2x2 sections), keeping bonded
 // neighbours out of Hertz contacts, and the rod measures of compute
 // rod/shape, all through LIGGGHTS.
+#include "common/math_constants.h"
 #include "liggghts_session.h"
 
 #include "compute.h"
@@ -15,7 +16,7 @@ using hsrod_test::num;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 
 
 const std::vector<std::string> kSetup = {"units si", "atom_style hybrid granular molecular",

@@ -1,3 +1,4 @@
+#include "common/math_constants.h"
 #include "pore_passage_driver.h"
 
 #include "dynamics/overdamped_rod_step.h"
@@ -14,7 +15,7 @@
 namespace hsrod_test {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 constexpr double kLength = 600e-6, kWidth = 200e-6, kGap = 20e-6;  // [m]
 constexpr double kPoreRadius = 85e-6, kPoreX = 300e-6;             // [m]
 constexpr double kD = 3e-6;                                        // [m]

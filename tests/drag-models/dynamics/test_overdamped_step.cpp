@@ -2,6 +2,7 @@
 // spheres, stability far beyond the explicit limit with convergence in dt,
 // the C-shape of a flexible rod across the flow (level 3 only), and wall
 // contact keeping spheres out of the walls.
+#include "common/math_constants.h"
 #include "dynamics/overdamped_rod_step.h"
 #include "hydro/hydrodynamic_model.h"
 #include "rod/rod_linearisation.h"
@@ -20,7 +21,7 @@
 using namespace hsrod;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 
 struct Scene {
   double d, beta, youngs_modulus;

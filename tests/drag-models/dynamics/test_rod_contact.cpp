@@ -5,6 +5,7 @@
 // (sliding at exactly mu F_n, sticking below it); rods beyond reach are
 // separate clusters and a merged step of rods that do not touch equals the
 // rods' own steps bit for bit.
+#include "common/math_constants.h"
 #include "dynamics/guarded_step.h"
 #include "dynamics/overdamped_rod_step.h"
 #include "dynamics/rod_cluster.h"
@@ -19,7 +20,7 @@
 using namespace hsrod;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 constexpr double d = 3e-6, r = 0.5 * d;             // sphere [m]
 constexpr double viscosity = 1e-3;                  // [Pa s]
 const double zeta = 3 * kPi * viscosity * d;        // translational resistance [N s/m]

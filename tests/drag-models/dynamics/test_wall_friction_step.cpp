@@ -2,6 +2,7 @@
 // and pushed along it reaches the steady states the Coulomb law gives by
 // hand (sliding, and rolling without slip below the friction limit), and a
 // reversing load at a step 1000x the contact time scale does not chatter.
+#include "common/math_constants.h"
 #include "dynamics/overdamped_rod_step.h"
 #include "hydro/hydrodynamic_model.h"
 
@@ -12,7 +13,7 @@
 using namespace hsrod;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 constexpr double d = 3e-6, r = 0.5 * d;           // sphere [m]
 constexpr double viscosity = 1e-3;                // [Pa s]
 const double zeta = 3 * kPi * viscosity * d;      // translational resistance [N s/m]

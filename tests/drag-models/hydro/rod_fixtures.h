@@ -1,7 +1,7 @@
 // Rigid straight rods in a uniform stream, for the hydrodynamic model tests.
 #pragma once
 
-#include "flow/background_flow.h"
+#include "flow/uniform_flow.h"
 #include "hydro/hydrodynamic_model.h"
 
 #include <Eigen/Dense>
@@ -11,21 +11,11 @@
 
 namespace hsrod_test {
 
-// Uniform gap-averaged stream of 1 m/s along x (gap height H [m], 1 m unless
-// given: level 4 needs the model's H; the planform, 1 m wide, has no walls
-// any window reaches).
-class UniformStream : public hsrod::BackgroundFlow {
+// Uniform gap-averaged stream of 1 m/s along x in a wide slit (gap height H
+// [m], 1 m unless given: level 4 needs the model's H).
+class UniformStream : public hsrod::UniformFlow {
  public:
-  explicit UniformStream(double gap = 1.0) : geometry_(1.0, 1.0, gap, -0.5, -0.5) {}
-  Eigen::Vector2d velocity(double, double) const override { return {1.0, 0.0}; }
-  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
-  double pressure(double, double) const override { return 0.0; }
-  double mean_velocity() const override { return 1.0; }
-  const hsrod::ChannelGeometry& geometry() const override { return geometry_; }
-  std::string description() const override { return "uniform stream"; }
-
- private:
-  hsrod::ChannelGeometry geometry_;
+  explicit UniformStream(double gap = 1.0) : UniformFlow(wide_slit(gap, {1.0, 0.0})) {}
 };
 
 // N spheres of diameter d, axis at angle theta from the flow (x) direction:

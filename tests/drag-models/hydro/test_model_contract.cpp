@@ -10,7 +10,7 @@
 // model: model_contract_reference.txt.
 #include "hydro/model_registry.h"
 
-#include "flow/background_flow.h"
+#include "flow/uniform_flow.h"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -45,21 +45,10 @@ std::map<std::string, Tolerances> reference() {
   return rows;
 }
 
-// A uniform gap-averaged stream U along x in a wide slit of gap H (walls far away).
-class UniformSlitStream : public BackgroundFlow {
- public:
-  UniformSlitStream(double gap, double speed) : geometry_(1e-2, 1e-2, gap, -5e-3, -5e-3), speed_(speed) {}
-  Eigen::Vector2d velocity(double, double) const override { return {speed_, 0.0}; }
-  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
-  double pressure(double, double) const override { return 0.0; }
-  double mean_velocity() const override { return speed_; }
-  const ChannelGeometry& geometry() const override { return geometry_; }
-  std::string description() const override { return "uniform slit stream"; }
-
- private:
-  ChannelGeometry geometry_;
-  double speed_;
-};
+// A uniform gap-averaged stream U along x in a slit of gap H, 1 cm wide (walls far away).
+UniformFlow uniform_slit_stream(double gap, double speed) {
+  return UniformFlow(ChannelGeometry(1e-2, 1e-2, gap, -5e-3, -5e-3), {speed, 0.0});
+}
 
 // A gently bent 10-sphere rod (an arc), tilted to the flow, centred at `centre`.
 RodGeometry bent_rod(const Eigen::Vector3d& centre, int id) {
@@ -117,7 +106,7 @@ class ModelContract : public ::testing::TestWithParam<std::string> {
   Tolerances tolerance;
   const HydrodynamicModel* model = nullptr;
   const HydrodynamicModel* level1 = nullptr;
-  const UniformSlitStream stream{kGap, 1e-3};
+  const UniformFlow stream = uniform_slit_stream(kGap, 1e-3);
 };
 
 TEST_P(ModelContract, ResistanceIsSymmetricPositiveDefinite) {
@@ -144,7 +133,7 @@ TEST_P(ModelContract, LoadIsDrivingMinusResistanceTimesVelocity) {
 }
 
 TEST_P(ModelContract, RestingRodInQuiescentFluidFeelsNothing) {
-  const UniformSlitStream still(kGap, 0.0);
+  const UniformFlow still = uniform_slit_stream(kGap, 0.0);
   RodDrag drag;
   const RodGeometry rod = bent_rod(Eigen::Vector3d::Zero(), 1);
   model->evaluate(rod, still, drag);

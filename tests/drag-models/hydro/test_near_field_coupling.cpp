@@ -10,7 +10,8 @@
 //  - the resistance stays symmetric positive definite over beta 0.05-0.75
 //    for touching and overlapping (0.75 d) spheres;
 //  - the file is read strictly.
-#include "flow/background_flow.h"
+#include "common/math_constants.h"
+#include "flow/uniform_flow.h"
 #include "hydro/near_field_coupling.h"
 #include "hydro/nonlocal_model.h"
 #include "hydro/twoway_near_field.h"
@@ -28,22 +29,11 @@
 using namespace hsrod;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 constexpr double kD = 3e-6, kMu = 1e-3;
 
-class Stream : public BackgroundFlow {
- public:
-  explicit Stream(double gap) : geometry_(1.0, 1.0, gap, -0.5, -0.5) {}
-  Eigen::Vector2d velocity(double, double) const override { return {1e-3, 0.0}; }
-  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
-  double pressure(double, double) const override { return 0.0; }
-  double mean_velocity() const override { return 1e-3; }
-  const ChannelGeometry& geometry() const override { return geometry_; }
-  std::string description() const override { return "uniform stream"; }
-
- private:
-  ChannelGeometry geometry_;
-};
+// A stream of 1 mm/s along x in a wide slit of gap H [m].
+UniformFlow stream_in_slit(double gap) { return UniformFlow::wide_slit(gap, {1e-3, 0.0}); }
 
 RodGeometry pair(double distance) {
   RodGeometry rod;
@@ -93,7 +83,7 @@ TEST(NearFieldCoupling, DistantPairsKeepTheDepthAveragedCoupling) {
     ASSERT_TRUE(fit.nonlocal.friction.active() && fit.nonlocal.driving.active());
     const double gap = kD / beta;
     const HydrodynamicParameters p{kMu, gap, kD};
-    const Stream stream(gap);
+    const UniformFlow stream = stream_in_slit(gap);
     const ConfinementTable& table = ConfinementTable::default_table();
     const NonlocalRodModel near3(p, table), plain3(p, table, NearFieldAtBeta{});
     // Beyond 23 blend lengths the weight is below 1e-10 and dropped: the coupling is exactly the level's own.
@@ -131,7 +121,7 @@ TEST(NearFieldCoupling, LevelFourPathOnLevelThreeIsLevelThree) {
   const NearFieldAtBeta c{NearFieldCoupling{0.3, 0.6, 0.2, 0.8}, NearFieldCoupling{0.45, -0.3, 0.4, 0.2}};
   const NonlocalRodModel with(p, ConfinementTable::default_table(), c);
   const NonlocalRodModel without(p, ConfinementTable::default_table(), NearFieldAtBeta{});
-  const Stream stream(gap);
+  const UniformFlow stream = stream_in_slit(gap);
   RodGeometry rod = hsrod_test::straight_rod(8, kD, 0.4);
   rod.positions[3].y() += 0.3 * kD;  // bent
   RodDrag a, b;
@@ -145,7 +135,7 @@ TEST(NearFieldCoupling, ResistanceStaysSymmetricPositiveDefinite) {
   for (double beta : {0.05, 0.1, 0.15, 0.3, 0.45, 0.6, 0.75}) {
     const double gap = kD / beta;
     const HydrodynamicParameters p{kMu, gap, kD};
-    const Stream stream(gap);
+    const UniformFlow stream = stream_in_slit(gap);
     const NonlocalRodModel level3(p, ConfinementTable::default_table());
     // Touching and overlapping (0.75 d) spheres. Closer still (0.5 d) the
     // depth-averaged coupling alone is already indefinite at beta >= 0.45

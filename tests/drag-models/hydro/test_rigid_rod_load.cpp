@@ -5,6 +5,7 @@
 // uniform stream it equals the free translation of the existing transport
 // tests (straight rods have no torque there), with drift angle 0 for the
 // isotropic level and towards the trailing end for the anisotropic ones.
+#include "common/math_constants.h"
 #include "flow/straight_channel_flow.h"
 #include "hydro/rigid_rod_load.h"
 #include "rod_fixtures.h"
@@ -16,7 +17,7 @@
 using namespace hsrod;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 constexpr double kD = 3e-6, kMu = 1e-3, kH = 10e-6;  // beta = 0.3
 
 std::unique_ptr<HydrodynamicModel> model(const std::string& name) {

@@ -10,6 +10,7 @@
 // confinement ~0.5); a tilted fibre drifts towards a lateral wall "in the
 // opposite direction found in sedimenting fibers" (which glide towards
 // their leading, lower end), i.e. towards the side of its trailing end.
+#include "common/math_constants.h"
 #include "hydro/hydrodynamic_model.h"
 #include "rod_fixtures.h"
 
@@ -27,7 +28,7 @@ using hsrod_test::free_rigid_translation;
 using hsrod_test::straight_rod;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 constexpr double kD = 3e-6, kMu = 1e-3;
 
 std::unique_ptr<HydrodynamicModel> model(const std::string& name, double beta) {

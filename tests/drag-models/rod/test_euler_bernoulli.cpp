@@ -2,6 +2,7 @@
 // small-displacement limit (linearised bond law). The stiffnesses come from
 // E, nu and d alone: no per-test tuning. The same checks are repeated
 // through LIGGGHTS (dynamic runs) in tests/liggghts.
+#include "common/math_constants.h"
 #include "reference_data.h"
 #include "rod/rod_linearisation.h"
 #include "rod/stability_limits.h"
@@ -16,7 +17,7 @@
 using namespace hsrod;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 
 struct Beam {
   RodLayout layout;

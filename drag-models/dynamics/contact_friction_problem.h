@@ -1,5 +1,5 @@
 // The friction forces of a step's rubbing contact points at the step's end
-// velocities (backward Euler; OverdampedRodSolver::step, issue 10).
+// velocities (backward Euler; OverdampedRodSolver::step).
 //
 // The step was taken with each point's friction linearised as a secant
 // -c s about a previous slip s. Its own matrix answers extra tangential

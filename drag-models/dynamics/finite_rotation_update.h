@@ -1,5 +1,5 @@
 // Position update of the linearly implicit rod step with finite bond
-// rotations (issue 10: a stiff rod lost its rotation).
+// rotations (an update linear in the rotation loses a stiff rod's rotation).
 //
 // The step (overdamped_rod_step.h) solves for displacements dx_i and
 // rotation vectors dphi_i. The orientations are updated exactly,

@@ -1,5 +1,4 @@
-// Several rods in one scene (issue 11, item 5): which rods are stepped
-// together.
+// Several rods in one scene: which rods are stepped together.
 //
 // The implicit step (overdamped_rod_step.h) solves one rod's spheres at once.
 // Two rods that touch, or that the drag model couples hydrodynamically

@@ -1,4 +1,4 @@
-// Where the time of an implicit rod run went (issue 13, "cost model"): the
+// Where the time of an implicit rod run went: the
 // per-step and per-sphere-step wall time of fix rod/implicit, split into
 // the drag model's evaluation, the bond loads and Jacobians, the wall and
 // self-contacts, the linear solve (assembly, factorisation, update) and the

@@ -32,7 +32,7 @@ struct WallContactParameters {
   double rod_friction_coefficient = 0.0;
   double friction_coefficient = 0.0;  // Coulomb wall friction mu_fr [-] (paper Table 1: 0.5); 0 = frictionless
   double slip_velocity = 1e-6;        // v_s of the regularised law [m/s]: below it friction is viscous
-  // Wall friction at the step's end velocities (backward Euler, issue 10).
+  // Wall friction at the step's end velocities (backward Euler).
   // The step takes each rubbing point's secant about the previous step's
   // slip; where that leaves a point's friction off the law at the step's
   // end velocities by more than friction_tolerance mu F_n, the contacts'

@@ -1,8 +1,8 @@
 // Background (rod-free) flow of a scene: the depth-averaged Brinkman field
 //     mu lap(u) - (12 mu / H^2) u - grad p = 0,   div u = 0
 // in the planform, no-slip on walls and obstacles, the developed Brinkman
-// profile at the inlet x_lo and p = 0 at the outlet x_hi (DESIGN.md,
-// "Background flow"). u is the gap-averaged velocity; the 3-D field is
+// profile at the inlet x_lo and p = 0 at the outlet x_hi (Brinkman model of
+// a Hele-Shaw cell). u is the gap-averaged velocity; the 3-D field is
 // u(x, y) * 6 (z/H)(1 - z/H) with z measured from the lower gap wall (z = 0)
 // to the upper one (z = H).
 //

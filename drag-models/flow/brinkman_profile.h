@@ -2,8 +2,9 @@
 //
 // The gap-averaged velocity u(y) of a channel of width W and gap H solves
 //     mu u'' - (12 mu / H^2) u = dp/dx,   u(0) = u(W) = 0
-// (Brinkman equation of the Hele-Shaw channel, DESIGN.md "Background flow";
-// the friction 12 mu / H^2 u is the gap average of the Poiseuille profile).
+// (Brinkman equation of the Hele-Shaw channel, Gondret & Rabaud, Phys. Fluids
+// 9, 3267 (1997); the friction 12 mu / H^2 u is the gap average of the
+// Poiseuille profile).
 // With k = sqrt(12) / H and a = k W / 2 the solution scaled to the mean U is
 //     u(y) / U = [1 - cosh(k (y - W/2)) / cosh(a)] / [1 - tanh(a) / a].
 // Near a side wall (W >> H) u / u_centre = 1 - exp(-k y): the wall layer has

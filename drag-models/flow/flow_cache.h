@@ -1,6 +1,6 @@
 // On-disk cache of solved background-flow fields, so that a planform is solved
-// once and every later run with the same scene loads it (DESIGN.md: "a
-// planform solved once is cached (keyed by the scene)").
+// once and every later run with the same scene loads it instead of solving
+// it again (keyed by the scene).
 //
 // A field is stored in dimensionless form (lengths / H, velocity / U,
 // pressure / (mu U / H)). Without the inertia term that field depends only on

@@ -1,4 +1,4 @@
-// VTK output of a background flow for ParaView (issue 12): the gap-averaged
+// VTK output of a background flow for ParaView: the gap-averaged
 // velocity and pressure on a regular lattice over the planform as XML image
 // data (.vti), optionally reconstructed in 3-D through the gap with the
 // parabolic profile u(x, y) 6 (z/H)(1 - z/H) (background_flow.h), the

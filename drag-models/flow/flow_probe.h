@@ -1,4 +1,4 @@
-// Probes of a background flow (issue 12): the gap-averaged velocity, its
+// Probes of a background flow: the gap-averaged velocity, its
 // gradient and the pressure at planform points, and integrals over a straight
 // section (flow rate, mean pressure), for output (compute hele_shaw/probe)
 // and checks. Everything is read from a BackgroundFlow (background_flow.h);

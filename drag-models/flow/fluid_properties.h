@@ -1,4 +1,4 @@
-// Newtonian carrier fluid of a scene (DESIGN.md, "Scenes": mu, rho_f).
+// Newtonian carrier fluid of a scene: viscosity mu and density rho_f.
 #pragma once
 
 namespace hsrod {

@@ -161,7 +161,7 @@ GridBrinkmanFlow::GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidP
       loaded_from_cache_ = true;
       return;
     }
-    // A damaged or foreign file is solved anew and overwritten: said (issue 10).
+    // A damaged or foreign file is solved anew and overwritten, with a notice.
     if (!why_unused.empty()) cache_notice_ = "cache file " + cache_file_ + " not used (" + why_unused + "), solved anew";
   }
 
@@ -187,7 +187,7 @@ GridBrinkmanFlow::GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidP
   solves_performed_ = 1;
   ++g_solves;
   if (!cache_file_.empty() && store_cached_field(cache_file_, key, field_, &cache_error_)) {
-    // Bounded cache (issue 10: files were never removed).
+    // Bounded cache: without pruning, cache files would pile up for ever.
     const double limit = options.cache_size_limit >= 0.0 ? options.cache_size_limit : cache_size_limit_bytes();
     const std::string pruned = prune_cache_directory(cache_dir, limit, cache_file_).summary();
     if (!pruned.empty()) cache_notice_ += (cache_notice_.empty() ? "" : "; ") + pruned;

@@ -1,4 +1,4 @@
-// Bounded work for the background-flow grid solve (issue 10): the cost of a
+// Bounded work for the background-flow grid solve: the cost of a
 // solve is predicted from the grid alone, before anything is allocated, and
 // checked against limits the caller can raise.
 //

@@ -1,5 +1,5 @@
 // Picks the cheapest background-flow model that is exact for the scene
-// (DESIGN.md: "Skip what the scene does not need"): the closed-form profile
+// (skip what the scene does not need): the closed-form profile
 // for a straight channel (no grid is ever built), the cached grid solver for
 // any other planform.
 #pragma once

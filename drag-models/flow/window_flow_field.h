@@ -1,6 +1,6 @@
 // The disturbance flow a BrinkmanWindow solves for given node forces, as a
-// field over the planform (issue 12: level 4's disturbed flow in the field
-// output, flow_field_vtk.h). The velocity u' [m/s] (gap-averaged) is
+// field over the planform (level 4's disturbed flow in the field output,
+// flow_field_vtk.h). The velocity u' [m/s] (gap-averaged) is
 // interpolated bilinearly from the MAC nodes, with u' = 0 on the window
 // edges and at nodes in walls (the window's boundary conditions); the
 // pressure p' [Pa] bilinearly between the cell centres, over the cells with

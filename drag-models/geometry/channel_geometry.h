@@ -1,4 +1,4 @@
-// Planform of a Hele-Shaw channel scene (DESIGN.md, "Physics" -> "Scenes").
+// Planform of a Hele-Shaw channel scene (Braesel et al., Soft Matter 2024, Fig. 1).
 //
 // A channel of length L along x (flow direction), width W along y and gap
 // height H along z, with obstacles that span the whole gap (z-cylinders).

@@ -1,6 +1,6 @@
 // The `auto` policy of the model keyword: the cheapest level whose error
-// against the resolved reference, as measured in the cross-check (issue 14
-// item 5), stays within a tolerance for this scene.
+// against the resolved reference, as measured in the cross-check
+// (hsrod_crosscheck_levels), stays within a tolerance for this scene.
 //
 // Error model: the cross-check record (level_error_record(), written by
 // hsrod_crosscheck_levels --error-record-cpp from the resolved campaign,
@@ -19,7 +19,7 @@
 // a fraction of the rod length L. A flexible rod whose estimate exceeds the
 // deflection tolerance is given a non-local level (3 or 4) only.
 //
-// Walls and pores (issue 14 item 5): a second record, the worst errors of
+// Walls and pores: a second record, the worst errors of
 // each level against the resolved rows near a side wall and beside a pore
 // cylinder (near_wall_error_record(), written by hsrod_crosscheck_scenes
 // --wall-record-cpp from calibration/data/level_error_near_walls.csv, levels

@@ -1,5 +1,5 @@
 // Built-in confinement coefficients (ConfinementTable::default_table()): the
-// fit of levels 1 and 2 to the resolved rodIbFoam campaign (issue 14), not
+// fit of levels 1 and 2 to the resolved rodIbFoam campaign, not
 // derived from another reduced level.
 //
 // Resolved runs: calibration/tools/hsrod_campaign.py (rigid rows of N = 1,

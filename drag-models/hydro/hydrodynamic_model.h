@@ -1,5 +1,5 @@
 // The reduced hydrodynamic models of hsrod behind one interface
-// (DESIGN.md, "Hydrodynamic force on the rods (a ladder of fidelity)").
+// (a ladder of fidelity: 1-2 local, 3 non-local, 4 two-way; model_registry.h).
 //
 // Every model gives the hydrodynamic load on the spheres of one rod as an
 // affine function of their velocities,
@@ -112,7 +112,7 @@ class HydrodynamicModel {
   // Without kept state (level 4: a full window solve for this call).
   void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out) const;
 
-  // Several rods at once (issue 11, several rods): the load on all their
+  // Several rods at once: the load on all their
   // spheres, rod after rod in the order given. A model whose rods interact
   // hydrodynamically (interaction_reach() > 0: level 3) couples the spheres
   // of different rods; the default evaluates each rod alone (with its

@@ -1,4 +1,4 @@
-// Levels 1-2 of the fidelity ladder (DESIGN.md): local drag laws.
+// Levels 1-2 of the fidelity ladder (hydrodynamic_model.h): local drag laws.
 #pragma once
 
 #include "hydro/hydrodynamic_model.h"

@@ -1,5 +1,5 @@
 // The one list of hsrod's hydrodynamic models (the fidelity ladder of
-// DESIGN.md): each model is registered once, with its name (the `model`
+// hydrodynamic_model.h): each model is registered once, with its name (the `model`
 // keyword of fix hele_shaw/drag), its level, a one-line description and its
 // factory, in model_registry.cpp. Everything that needs to know the models
 // reads this list: make_hydrodynamic_model, the fix's keyword check and the

@@ -1,4 +1,4 @@
-// Level 3 of the fidelity ladder (DESIGN.md): the spheres of a rod interact
+// Level 3 of the fidelity ladder (hydrodynamic_model.h): the spheres of a rod interact
 // through the depth-averaged Brinkman Green's function (brinkman_green.h).
 //
 // Each confined sphere's friction zeta(beta) = 3 pi mu d f(beta) is split

@@ -1,4 +1,4 @@
-// In-plane rigid-body reduction of a rod's hydrodynamic load (issue 12):
+// In-plane rigid-body reduction of a rod's hydrodynamic load:
 // for a rigid planar motion q = (V_x, V_y, Omega_z) about the centroid c of
 // the sphere centres, sphere i moves with v_i = J_i q = (V_x - Omega (y_i - c_y),
 // V_y + Omega (x_i - c_x), 0) and spins with omega_i = Omega e_z. With the

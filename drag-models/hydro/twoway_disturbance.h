@@ -1,4 +1,4 @@
-// The flow disturbed by the rods at level 4, for field output (issue 12):
+// The flow disturbed by the rods at level 4, for field output:
 // each rod's window (hydro/twoway_window_model.h) solved for the reaction of
 // the obstruction forces its spheres felt at their last evaluation.
 //

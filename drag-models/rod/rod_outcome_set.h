@@ -1,4 +1,4 @@
-// Outcomes of several rods in one scene (issue 11): each rod has its own
+// Outcomes of several rods in one scene: each rod has its own
 // RodOutcomeTracker (rod/rod_outcome.h); this class adds what one rod
 // cannot know alone, that it is held by another rod.
 //

@@ -86,8 +86,8 @@ std::string RodStabilityLimits::table(double timestep) const {
   out += row("Rayleigh (Hertz contact)", rayleigh_time);
   out += row("axial bond sqrt(m/k_n)", axial_bond_time);
   out += row("bending bond sqrt(I_s/k_b)", bending_bond_time);
-  // Without a viscosity there is no Stokes relaxation time: no row (issue 10:
-  // a "Stokes relaxation 0" row read as a zero time scale).
+  // Without a viscosity there is no Stokes relaxation time: no row (a
+  // "Stokes relaxation 0" row would read as a zero time scale).
   if (stokes_relaxation_time > 0.0) out += row("Stokes relaxation m/(3 pi mu d)", stokes_relaxation_time);
   out += row("explicit bond limit 2/omega_max", explicit_bond_limit);
   return out;

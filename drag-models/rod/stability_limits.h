@@ -1,6 +1,6 @@
 // Time scales that bound an explicit (velocity-Verlet) step of a bonded rod.
-// DESIGN.md ("Time integration and stability") tabulates them for the
-// paper's scenes; this computes them for the rod of a run.
+// For the paper's pore scene they range from 22 ns (axial bond, E = 15 MPa) to
+// 2.3 us (Hertz contact, E = 15 kPa); this computes them for the rod of a run.
 #pragma once
 
 #include "rod/beam_bond.h"

@@ -128,8 +128,8 @@ TEST(calibration_CalibratedLevels, Level2DriftAnisotropyAsResolved) {
   EXPECT_GE(rods, 25);
 }
 
-// beta 0.05, below the fitted range (0.1-0.75; issue 14's range starts at
-// 0.05): the resolved rows of calibration/campaign/beta005 (meshes d/h = 6
+// beta 0.05, below the fitted range (0.1-0.75; the resolved campaign starts
+// at 0.05): the resolved rows of calibration/campaign/beta005 (meshes d/h = 6
 // and 8, values on 8; lateral faces 2 H: calibration/data/
 // resolved_beta005_series.csv) against levels 2-4 with the shipped table and
 // near field, extrapolated: totals within 10 %, free velocities within 3 %,

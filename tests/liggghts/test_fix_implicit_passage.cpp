@@ -1,9 +1,8 @@
 // fix rod/implicit carries the rod through the pore as the recorded
-// integrator did (issue 13: the step without per-step allocation, one
-// flow lookup per sphere, the bond state on demand must not move the rod;
-// recorded with main ae2383d, re-recorded for issue 10's finite-rotation
-// position update, which moved the finals by up to 0.14 deg: the file's
-// header).
+// integrator did (the step without per-step allocation, one flow lookup
+// per sphere, the bond state on demand must not move the rod; recorded
+// with the finite-rotation position update, which moved the finals by up
+// to 0.14 deg from main ae2383d's: the file's header).
 // Levels 1-3, a soft (15 kPa) and a stiff (15 MPa) rod at the fixed step,
 // and levels 1-2 with adaptive substeps under a 10x timestep; final centre
 // x, angle (eq. 1) and lateral displacement against

@@ -98,7 +98,7 @@ TEST(ImplicitRestart, LevelFourRunContinuesIdenticallyWithItsWindowsRestored) {
   EXPECT_LT(worst, 1e-12 * kD);
 }
 
-// Issue 10: `time` restarted at 0 after read_restart (LIGGGHTS 3.8 stores
+// `time` must not restart at 0 after read_restart (LIGGGHTS 3.8 stores
 // the step, not the simulated time). After 40 steps of 4 us, restarted, and
 // 10 more steps, the run's time is 50 x 4 us, as in the unbroken run.
 TEST(ImplicitRestart, SimulatedTimeContinuesAfterReadRestart) {

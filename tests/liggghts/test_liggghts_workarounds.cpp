@@ -10,7 +10,7 @@
 
 namespace {
 
-// Issue 10: "ERROR lines are sometimes printed twice with garbage bytes".
+// ERROR lines must not be printed twice with garbage bytes.
 // LIGGGHTS' Error::one/all print, in one of five errors of a "PUBLIC"
 // build, SpecialMessages::generate_message(), a pointer into a destroyed
 // std::string. Every hsrod instance must have that message switched off

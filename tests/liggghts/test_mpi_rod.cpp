@@ -126,7 +126,7 @@ TEST(MpiRod, TwoWayPorePassageTwoRanksMatchOneRank) {
   expect_pore_passage_independent_of_ranks("twoway window_cells 2");
 }
 
-// Several rods (issue 11): two rods, one on each rank at the start, pushed
+// Several rods: two rods, one on each rank at the start, pushed
 // into contact across the rank boundary at x = 300 um, Hertz contact with
 // friction and level 3's hydrodynamic interaction between them; every rank
 // gathers both rods and steps them together, so 2 ranks equal 1.

@@ -100,8 +100,8 @@ TEST(PoreScene, TwoWayLevelPassesThePoreCloseToLevel3) {
   EXPECT_LT(std::fabs(twoway.x - nonlocal.x), 1.0 * d);
   EXPECT_LT(std::fabs(twoway.angle - nonlocal.angle), 2.0);
   // No bound on the lateral position between the two levels: since levels 3
-  // and 4 have near fields of their own, each fitted to the resolved rods
-  // (issue 14), they end 0.0055 W apart here, and which is right is a
+  // and 4 have near fields of their own, each fitted to the resolved rods,
+  // they end 0.0055 W apart here, and which is right is a
   // question for the resolved pore passage, not for one level against the
   // other: calibration/validation/pore_passage (and the disabled test
   // pore_passage_default_level_vs_resolved) records each level's lateral
@@ -152,7 +152,7 @@ TEST(PoreScene, OutcomeClassesOfThePaper) {
   // the flow is trapped, as the paper's Fig. 10(c) shows for 15 MPa rods
   // already at L_Rod/d_pore = 2 (this case passed with contact with the
   // level-2 columns derived from level 3, whose load across a rod was ~45 %
-  // above the resolved runs; the calibrated table, issue 14, traps it); the
+  // above the resolved runs; the calibrated table traps it); the
   // same rod at 1.5 MPa bends against the cylinders and escapes: contact passage.
   EXPECT_EQ(pore_outcome(10, 10.0, 5e-3), 1.0);
   EXPECT_EQ(pore_outcome(30, 0.0, 7e-3), 3.0);

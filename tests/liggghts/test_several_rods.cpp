@@ -1,4 +1,4 @@
-// Several rods in one scene (issue 11, item 5) through fix rod/implicit:
+// Several rods in one scene through fix rod/implicit:
 // rods pressed together by opposite forces stop at the Hertz overlap of
 // the force (rod_contact hertz; Johnson 1985, eq. 4.22 for two equal
 // spheres), rods far apart move bit for bit as each alone, and rods that

@@ -1,4 +1,4 @@
-// fix rod/implicit and its two partner fixes (issue 9, item 4): the
+// fix rod/implicit and its two partner fixes: the
 // integrator names fix rod/bonds and fix hele_shaw/drag by ID, and each
 // partner decides at its own init() whether an integrator takes over its
 // work (liggghts-package/src/implicit_partners.h). Checked here by what a
@@ -78,8 +78,8 @@ TEST(ImplicitPartners, UnfixedIntegratorHandsTheDragBack) {
   EXPECT_NEAR(forces.y(), total.y(), 1e-9 * std::abs(total.x()));
 }
 
-// Issue 10: under fix rod/implicit, fix rod/bonds' energy and largest strain
-// (f_bonds[1], f_bonds[2]) always read 0, so a 19 % transient strain went
+// Under fix rod/implicit, fix rod/bonds' energy and largest strain
+// (f_bonds[1], f_bonds[2]) must not read 0: a 19 % transient strain would go
 // unseen. After a soft rod bent in the flow for 60 implicit steps, both must
 // equal what the explicit path computes from the same positions and
 // orientations (a zero-step run after the integrator is unfixed).

@@ -1,8 +1,8 @@
-// Whole-rod accounting of fix rod/implicit (issue 10, item 4): a rod that
+// Whole-rod accounting of fix rod/implicit: a rod that
 // reaches the outlet is held there whole instead of LIGGGHTS dropping its
 // spheres one by one as they leave the box (with LIGGGHTS' default
-// `thermo_modify lost ignore` a partial rod went on; measures then read a
-// fragment).
+// `thermo_modify lost ignore` a partial rod would go on; measures would then
+// read a fragment).
 #include "liggghts_session.h"
 
 #include "atom.h"

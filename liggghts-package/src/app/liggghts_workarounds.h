@@ -12,7 +12,7 @@ namespace hsrod {
 // build whose version string contains "PUBLIC", a "Tip of the day" or
 // "Comment from the off" (SpecialMessages::generate_message, error_special.h)
 // that is returned as the c_str() of a destroyed local std::string: the
-// ERROR line is printed a second time with garbage bytes (issue 10). The
+// ERROR line is printed a second time with garbage bytes. The
 // message is generated only when universe->version contains "PUBLIC"; this
 // replaces that version string by the same text with "PUBLIC" written
 // "Public" (the banner, printed before, is unchanged). Call once per

@@ -1,5 +1,5 @@
 // Run-time registration of this package's styles with Debian's prebuilt
-// libliggghts (DESIGN.md, "Registering styles with a prebuilt LIGGGHTS").
+// libliggghts, which has no plugin mechanism.
 //
 // LIGGGHTS looks styles up in Modify::fix_map, Modify::compute_map and
 // Input::command_map, which are private/protected and filled from the

@@ -1,5 +1,5 @@
-// hsrod screening of a resolved CFD-DEM input script (issue 11 item 4;
-// doc: liggghts-package/doc/hsrod_screen.txt). What the stand-in fixes
+// hsrod screening of a resolved CFD-DEM input script (doc:
+// liggghts-package/doc/hsrod_screen.txt). What the stand-in fixes
 // record while the unchanged script runs, and the scene file's values.
 #pragma once
 

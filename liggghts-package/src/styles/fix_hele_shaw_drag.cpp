@@ -54,7 +54,7 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *instance, int narg, char **arg)
   hsrod::ModelSpec model;
   parse_keywords(narg, arg, scene, model);
   check_confinement_before_solve(scene, model);
-  // Ctrl-C / SIGTERM during the background-flow solve (issue 10): hsrod's
+  // Ctrl-C / SIGTERM during the background-flow solve: hsrod's
   // main installs LIGGGHTS' handler, which sets SignalHandler::request_quit;
   // the solve polls it (between phases, every 20 ms in the factorisation)
   // and stops. error->one: a rank that saw the signal must not wait for
@@ -264,8 +264,8 @@ int FixHeleShawDrag::unpack_exchange(int nlocal, double *buf) {
 
 // Global restart data: [kRestartFormat, simulated time, count, the facade's
 // model state (count numbers)]. LIGGGHTS 3.8's restart files hold the step
-// but not the simulated time (thermo's `time` restarted at 0 after
-// read_restart, issue 10): this fix carries it. Files of the first format,
+// but not the simulated time (thermo's `time` would restart at 0 after
+// read_restart): this fix carries it. Files of the first format,
 // [count, state], start with a count >= 0 and are still read.
 namespace {
 constexpr double kRestartFormat = -2.0;

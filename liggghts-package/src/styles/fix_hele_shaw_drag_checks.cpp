@@ -36,7 +36,7 @@ constexpr double kMidPlaneTolerance = 0.05;
 }  // namespace
 
 // beta = d / H against the coefficient table before the background flow is
-// solved (issue 10: at beta 0.95 the grid solve ran before the beta check).
+// solved, so that a beta outside the table is refused before a long grid solve.
 // Spheres created later are checked in init() by the facade.
 void FixHeleShawDrag::check_confinement_before_solve(const hsrod::SceneSpec &scene, const hsrod::ModelSpec &model) {
   double dmin = 1e300;
@@ -97,8 +97,8 @@ void FixHeleShawDrag::check_placement() {
                   total_outside);
     error->all(FLERR, msg);
   }
-  // Every sphere must fit between the gap walls (issue 10: a rod centred in
-  // the lower wall z = 0 was accepted and pushed out). Overlaps up to 0.1 r
+  // Every sphere must fit between the gap walls (a rod centred in the lower
+  // wall z = 0 would otherwise be accepted and pushed out). Overlaps up to 0.1 r
   // pass: a rod touching a wall at the end of a run (Hertz overlap, bounded
   // per step by fix rod/implicit's guard at 0.1 r) may be run on.
   const double bottom = hydro_->gap_bottom(), top = bottom + hydro_->geometry().gap_height();
@@ -120,7 +120,7 @@ void FixHeleShawDrag::check_placement() {
   }
   // The model is gap-averaged for rods in the mid-plane (Faxen's mid-plane
   // friction and driving; the 3-D flow u(x,y) 6 (z/H)(1 - z/H)): a rod
-  // centred at z = H/4 moved exactly like one in the mid-plane (issue 10).
+  // centred at z = H/4 moves exactly like one in the mid-plane.
   // Off the mid-plane the flow is slower (3/4 of the mid-plane velocity at
   // H/4) and the friction higher; not modelled, so said once.
   if (midplane_warned_) return;

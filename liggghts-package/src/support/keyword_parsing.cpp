@@ -20,7 +20,7 @@ void refuse(Error *error, const char *style, const char *keyword, const char *ex
 }  // namespace
 
 // nan, inf and out-of-range values are refused here, once for every
-// keyword of every style (issue 10: `angle nan`, `youngs_modulus inf` ran).
+// keyword of every style (`angle nan` or `youngs_modulus inf` would run).
 double parse_number(Error *error, const char *style, const char *keyword, const char *text) {
   char *end = nullptr;
   errno = 0;

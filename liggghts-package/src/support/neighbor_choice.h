@@ -1,6 +1,6 @@
-// The neighbor setting a scene needs (issue 10: boxes with H <= 5 um or 40 mm
-// long failed with LIGGGHTS' "Cannot use neighbor bins - box size << cutoff"
-// until the user found `neighbor ... nsq`).
+// The neighbor setting a scene needs (boxes with H <= 5 um or 40 mm long
+// fail with LIGGGHTS' "Cannot use neighbor bins - box size << cutoff"
+// unless the user knows to set `neighbor ... nsq`).
 #pragma once
 
 namespace LAMMPS_NS {

@@ -1,5 +1,5 @@
 /* ----------------------------------------------------------------------
-   hsrod - whole-rod accounting for fix rod/implicit (issue 10, item 4):
+   hsrod - whole-rod accounting for fix rod/implicit:
    rods are moved, measured and lost whole, never in part.
    - RodCensus: the number of spheres of each rod (molecule) as first seen;
      a rod with fewer spheres later (LIGGGHTS dropped atoms outside the box,

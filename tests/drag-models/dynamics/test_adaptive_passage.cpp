@@ -1,4 +1,4 @@
-// Adaptive substeps (issue 13, item 2: steps where the motion is) on the
+// Adaptive substeps (steps where the motion is) on the
 // paper's pore passage (pore_passage_driver.h), level 2, stiff rod
 // (15 MPa): with a timestep 10x the fixed default (4e-5 s) and adaptive
 // substeps at tolerance 1e-2, the passage agrees with a fixed fine step

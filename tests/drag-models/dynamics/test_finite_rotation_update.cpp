@@ -1,5 +1,5 @@
-// Position update with finite bond rotations (dynamics/finite_rotation_update.h,
-// issue 10): a rigid rotation across (or along) the bonds given as the step's
+// Position update with finite bond rotations (dynamics/finite_rotation_update.h):
+// a rigid rotation across (or along) the bonds given as the step's
 // linear displacements dx_i = Omega x (x_i - c), dphi_i = Omega must move the
 // rod to its exactly rotated configuration (no stretched bonds), for a chain (running sum) and
 // for 2x2 sections (the bond graph's least-squares solve); a pure translation

@@ -2,8 +2,8 @@
 // commit 2e59078 (pore_passage_reference.txt: central-difference bond
 // Jacobian, dense LU; source commit and command in the file), for levels 1-4
 // and a soft (15 kPa) and a stiff (15 MPa) rod, at the same dt: the guard
-// for a rewrite of the step (issue 13), and for changes around it.
-// Re-recorded for issue 10's finite-rotation position update, which moved
+// for a rewrite of the step, and for changes around it.
+// Recorded with the finite-rotation position update, which moved
 // the stiff rows by up to 1.14 deg (0.02 d, 6.4e-4 W) and the soft rows by
 // <= 0.023 deg: both now within backward Euler's first-order error of a
 // 100x finer step alike (the file's header has the figures).
@@ -116,9 +116,9 @@ TimestepError timestep_error(double youngs_modulus) {
 }
 
 TEST(ImplicitPorePassageTimestep, VeryStiffRodConvergesAsAStiffOne) {
-  // Issue 10: a rod of E = 1.5e12 Pa turned ~1.4 deg less at dt = 2e-6 s
-  // than at 2e-8 s (23 % of its turn at 1.5e13 Pa): the tangent position
-  // update stretched its turning bonds, and the spurious tension blocked
+  // With a tangent position update a rod of E = 1.5e12 Pa turns ~1.4 deg
+  // less at dt = 2e-6 s than at 2e-8 s (23 % of its turn at 1.5e13 Pa): the
+  // update stretches its turning bonds, and the spurious tension blocks
   // the next step's rotation (dynamics/finite_rotation_update.h). With
   // finite bond rotations the step's error is backward Euler's first-order
   // error of the rod's motion, the same for any stiffness beyond bending in

@@ -1,4 +1,4 @@
-// Rod-rod contact inside the implicit step (issue 11, item 5): two rods
+// Rod-rod contact inside the implicit step: two rods
 // pressed together stop at the Hertz overlap of their load (Johnson 1985,
 // eq. 4.22 for two equal elastic spheres) and never press in further than
 // the guard's stated bound; friction between two rods is capped at mu F_n

@@ -125,8 +125,8 @@ TEST(BackgroundFlowFactory, RejectsBadGridOptions) {
       {"exceeds max_cells"});
 }
 
-// Issue 10: "a corrupt cache file is re-solved with no notice; cache files
-// are never pruned".
+// A corrupt cache file is solved anew with a notice saying why (the next
+// test: the cache directory is pruned to its size limit).
 TEST(BackgroundFlowFactory, DamagedCacheFileIsReportedAndSolvedAnew) {
   const test::PaperPoreScene s = test::load_paper_pore_scene();
   const test::TempDir cache;

@@ -143,8 +143,8 @@ TEST_F(GridBrinkmanPore, GradientInTheNoSlipBandIsTheDerivativeOfTheVelocity) {
   // be that velocity's derivative. The derivative of the weight, w'(phi) n,
   // was taken per metre where the rest is per unit H: 1/H = 5e4 times too
   // large, a mid-plane spin of 1e6-1e7 1/s instead of ~1e4 that spun a soft
-  // rod's end sphere half a turn against its bond at the pore cylinders
-  // (issue 10). At the upstream face of the upper cylinder, where that
+  // rod's end sphere half a turn against its bond at the pore cylinders.
+  // At the upstream face of the upper cylinder, where that
   // happened, and along its normal: central differences of velocity() with
   // a 10 nm step (the field varies over H/sqrt(12) = 5.8 um).
   const Eigen::Vector2d centre(scene_->x_pore, 200 * um), spot(264.4 * um, 120.534 * um);

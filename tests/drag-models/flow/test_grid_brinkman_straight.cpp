@@ -53,7 +53,7 @@ TEST(GridBrinkmanStraight, MatchesClosedFormAtDefaultGrid) {
   const double err = relative_l2_error(*numeric, exact);
   std::printf("straight channel, default grid (%s): relative L2 error %.3e\n",
               numeric->description().c_str(), err);
-  EXPECT_LT(err, 0.01);  // issue 5 requirement: < 1 %
+  EXPECT_LT(err, 0.01);  // required accuracy: < 1 %
   // The straight-channel solution has no transverse velocity at all.
   EXPECT_LT(std::abs(numeric->velocity(70 * um, 37 * um).y()), 1e-12);
   // Pressure gradient of the grid matches the closed form (linear p, p = 0 at the

@@ -1,4 +1,4 @@
-// Thin gaps (issue 10): the exponentially fitted wall layer lets the grid
+// Thin gaps: the exponentially fitted wall layer lets the grid
 // skip the Brinkman layer H/sqrt(12). Checked against the closed form
 // (straight channel) and against the established layer-resolving scheme
 // (pore planform at a gap where both are affordable); the documented thin-gap
@@ -108,8 +108,8 @@ TEST(GridBrinkmanThinGap, PoreMatchesTheLayerResolvingScheme) {
 
 TEST(GridBrinkmanThinGap, DocumentedThinPoreSceneSolvesOnTheCoarseGrid) {
   // The paper's pore scene at beta = 0.85 with 3 um spheres (H = 3.53 um):
-  // the layer-resolving grid would be 1767 x 589 cells (~13 min, > 10 GB, issue
-  // 10); `auto` picks the fitted layer on the pore-resolving grid.
+  // the layer-resolving grid would be 1767 x 589 cells (~13 min, > 10 GB);
+  // `auto` picks the fitted layer on the pore-resolving grid.
   const test::PaperPoreScene s = test::load_paper_pore_scene();
   const double gap = 3e-6 / 0.85;
   const ChannelGeometry g =

@@ -1,4 +1,4 @@
-// Bounded work of the background-flow solve (issue 10): a solve predicted
+// Bounded work of the background-flow solve: a solve predicted
 // over the limits is refused before it starts, with the figures; the
 // prediction follows measured solves; a cancel callback ends a solve.
 #include "flow/grid_brinkman_flow.h"
@@ -24,8 +24,8 @@ ChannelGeometry thin_pore(double beta) {
 }
 
 TEST(GridSolveBudget, ResolvedThinGapIsRefusedBeforeAnyWorkWithTheFigures) {
-  // The case of issue 10: beta 0.85, the layer-resolving grid is
-  // 1767 x 589 cells; today's solver ran 13 min and passed 10 GB.
+  // The thin-gap pore scene: beta 0.85, the layer-resolving grid is
+  // 1767 x 589 cells; a solve would run ~13 min and pass 10 GB.
   GridBrinkmanOptions o;
   o.use_cache = false;
   o.wall_layer = GridBrinkmanOptions::WallLayer::kResolved;

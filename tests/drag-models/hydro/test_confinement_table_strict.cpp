@@ -1,6 +1,6 @@
-// Strict reading of coefficient tables (issue 10): column names honoured,
+// Strict reading of coefficient tables: column names honoured,
 // extra columns and trailing junk refused, unphysical values refused (they
-// gave NaN or a rod moving upstream with exit code 0).
+// would give NaN or a rod moving upstream with exit code 0).
 #include "hydro/confinement_coefficients.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Level 2's resistance is symmetric positive definite for every bend of the
-// rod and every beta of the built-in table (issue 10: the buckling clogging
-// rod was refused at level 2; suspected a resistance that the session-8
-// refit had made indefinite for a bent rod). Each sphere's block is
+// rod and every beta of the built-in table (a refit can make the resistance
+// of a bent rod indefinite, and level 2 would then refuse a buckling rod
+// at the pore). Each sphere's block is
 // zeta (c_par t t^T + c_perp (I - t t^T)): symmetric positive definite iff
 // c_par > 0 and c_perp > 0 for the rod's n, which a refit with a negative
 // coefficient combination somewhere in beta or n would break. Checked on

@@ -44,7 +44,7 @@ TEST(RigidRodTransport, VelocityRatioTendsToThreeHalvesAndDecreasesWithBeta) {
   // 0.6 (1.4397, 1.4406, 1.4438 at beta 0.6, 0.7, 0.8), towards its lone
   // spheres' velocity, while the resolved rod moves at 1.303 at 0.6: level
   // 3's sphere coupling is 10 % off there (calibration/data/
-  // level_error_record.csv; its near field is issue 14's levels 3-4 work).
+  // level_error_record.csv; the near field of levels 3-4 is the place to fix it).
   const hsrod_test::UniformStream stream;
   for (const std::string name : {"isotropic", "local", "nonlocal"}) {
     double previous = 10.0;
@@ -113,10 +113,10 @@ TEST(RigidRodTransport, PerpendicularRodMovesFasterMarkedlyAboveHalfConfinement)
 }
 
 TEST(RigidRodTransport, ChainShieldingOfTheAxialFrictionAsResolved) {
-  // DESIGN.md fact (a): independent spheres overestimate the friction of a
-  // 10-sphere chain dragged along its axis by about two at moderate
-  // confinement, while the free-drift velocity comes out nearly right. The
-  // resolved rodIbFoam chain at beta 0.15 (calibration/data/
+  // Shielding along a confined chain: independent spheres overestimate the
+  // friction of a 10-sphere chain dragged along its axis by about two at
+  // moderate confinement, while the free-drift velocity comes out nearly
+  // right. The resolved rodIbFoam chain at beta 0.15 (calibration/data/
   // resolved_campaign_series.csv) puts the factor at 10 zeta / R_par = 2.69;
   // level 3 (with its near field) must give it within 10 %.
   const hsrod_test::UniformStream stream;
@@ -187,7 +187,7 @@ void expect_local_rods() {
 }  // namespace
 
 TEST(RigidRodTransport, Level3CouplesRodsAndTwoLoneSpheresAreOneUnbondedPair) {
-  // Several rods (issue 11): level 3's load on two rods of one sphere each
+  // Several rods: level 3's load on two rods of one sphere each
   // is, term by term, its load on one two-sphere rod (the Green's function
   // does not see bonds); local levels do not couple rods.
   const hsrod_test::UniformStream stream;
@@ -318,7 +318,7 @@ double row_load(const RodDrag& d, int first, int count, int a) {
 }  // namespace
 
 TEST(RigidRodTransport, Level4CouplesRodsAndTwoLoneSpheresAreOneUnbondedPair) {
-  // Level 4 (issue 11): rods evaluated together share one window, so two
+  // Level 4: rods evaluated together share one window, so two
   // rods of one sphere each are, term by term, one two-sphere rod (the
   // window does not see bonds either); its interaction reach is level 3's
   // (the same depth-averaged far field).

@@ -1,4 +1,4 @@
-// Stability limits against the values DESIGN.md tabulates for the pore
+// Stability limits against values worked out by hand for the pore
 // scene (d = 3 um, rho = 1170 kg/m3, mu = 1 mPa s) and against the exact
 // limit of a two-sphere axial oscillator.
 #include "rod/stability_limits.h"
@@ -22,7 +22,8 @@ hsrod::RodStabilityLimits limits(double youngs_modulus, int n) {
 }  // namespace
 
 TEST(StabilityLimits, MatchDesignTableForThePoreScene) {
-  // DESIGN.md, "Time integration and stability" (2 significant digits).
+  // m / (3 pi mu d), sqrt(m / k_n) with k_n = E A / d, sqrt(I_s / k_b) with
+  // k_b = E I / d, and Hertz's Rayleigh time (2 significant digits).
   const auto soft = limits(15e3, 10);
   EXPECT_NEAR(soft.stokes_relaxation_time, 0.6e-6, 0.05e-6);
   EXPECT_NEAR(soft.axial_bond_time, 0.7e-6, 0.05e-6);
@@ -45,7 +46,7 @@ TEST(StabilityLimits, TwoSphereAxialModeIsExact) {
   EXPECT_LE(lim.explicit_bond_limit, std::sqrt(2.0) * lim.axial_bond_time * (1 + 1e-6));
 }
 
-// Issue 10: fix rod/bonds (no viscosity) printed a "Stokes relaxation 0"
+// fix rod/bonds (no viscosity) must not print a "Stokes relaxation 0"
 // row. The row appears only with a viscosity, with the value and dt/value.
 TEST(StabilityLimits, TableShowsTheStokesRowOnlyWithAViscosity) {
   RodSpec spec;

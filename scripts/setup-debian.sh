@@ -11,7 +11,7 @@ packages=(
   # OpenBLAS (single-threaded: MPI ranks and sweep workers share the cores)
   # as the system's libblas.so.3: UMFPACK's dense kernels in level 4's window
   # factorisations run ~2x faster than on the reference BLAS (level 4's pore
-  # passage 0.85 -> 0.75 s, tests/benchmarks/RESULTS.md, session 13)
+  # passage 0.85 -> 0.75 s, tests/benchmarks/RESULTS.md)
   libopenblas0-serial
   libgtest-dev googletest libbenchmark-dev
   libcli11-dev nlohmann-json3-dev

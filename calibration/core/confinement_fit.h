@@ -77,7 +77,7 @@ ConfinementTable fit_table(const std::vector<ForceSample>& samples, const std::s
 //                   the lone sphere's, rod_n_law(c_inf, 1, 0, n, e),
 //                   c_inf = p0 + p1 beta + ..., then the shielding
 //                   e(beta) = polynomial of layout.shielding_terms terms
-//                   (0: e = 0, the session-8 form)
+//                   (0: e = 0, no shielding)
 //   RodColumnGrowth the same with the growth term g = beta^2 (k0 + k1 beta
 //                   ...) across the axis: params = (c_inf polynomial...,
 //                   layout.growth_terms k..., layout.shielding_terms e...)
@@ -113,7 +113,7 @@ struct CurvePoint {
 };
 
 // How the rod forms split their parameters (see CurveForm); the defaults are
-// the session-8 forms (constant k, constant k_held, no shielding).
+// the simplest forms (constant k, constant k_held, no shielding).
 struct RodLayout {
   int growth_terms = 1;       // RodColumnGrowth: terms of k(beta) in g = beta^2 k(beta)
   int shielding_terms = 0;    // RodColumn, RodColumnGrowth: terms of e(beta)

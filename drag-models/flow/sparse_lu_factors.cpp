@@ -33,7 +33,7 @@ SparseLuFactors::SparseLuFactors(const Eigen::SparseMatrix<double>& matrix) : n_
   // strategy with COLAMD alone. UMFPACK's default ordering (CHOLMOD: COLAMD,
   // then METIS when the fill looks large) spent ~15 % more on factorising
   // and gave ~7-18 % more fill (slower solves) on the pore windows of
-  // 2 300-32 000 cells (tests/benchmarks/RESULTS.md, session 13).
+  // 2 300-32 000 cells (tests/benchmarks/RESULTS.md).
   control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_UNSYMMETRIC;
   control[UMFPACK_ORDERING] = UMFPACK_ORDERING_AMD;
   UmfpackObjects objects;

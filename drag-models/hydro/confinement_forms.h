@@ -58,7 +58,7 @@ inline double rod_n_law_asymptote(double c_m, double c_1, double g, int m, doubl
 }
 // Growth coefficient across the axis: g = beta^2 (k_0 + k_1 beta + ...)
 // (k fitted, see perpendicular_growth in confinement_coefficients.h; one
-// term k_0 is the constant-k form of session 8).
+// term k_0 is the constant-k form).
 inline double rod_growth(double beta, const double* k, int nk) { return beta * beta * polynomial(k, nk, beta); }
 inline double rod_growth(double beta, double k) { return rod_growth(beta, &k, 1); }
 

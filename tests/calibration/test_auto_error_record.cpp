@@ -104,12 +104,12 @@ TEST(calibration_AutoErrorModel, InterpolatedRecordPredictsTheHeldOutRod) {
                   "(%.2f %%)\n", s.at("beta").c_str(), s.at("n").c_str(), level, 100 * now.force_error,
                   100 * predicted.force, 100 * now.velocity_error, 100 * predicted.velocity);
       // auto relies on the record not UNDER-predicting a level's error (it would pick a level worse than it
-      // thinks); an over-prediction only makes it pick a costlier level. Two-sided up to session 6; since the
-      // near field of levels 3-4 (session 7) the record over-predicts level 3 at beta 0.5 (linear between
-      // 0.45 and 0.6: 12.0 % against 8.9 %), so the force check is one-sided, with the same tolerance.
+      // thinks); an over-prediction only makes it pick a costlier level. With the near field of levels 3-4
+      // the record over-predicts level 3 at beta 0.5 (linear between 0.45 and 0.6: 12.0 % against 8.9 %),
+      // so the force check is one-sided, with the same tolerance.
       //
       // Beyond the record's longest rod (N = 10) the record is clamped and says so (extrapolated: auto prints
-      // "scene outside the record"); there it is not a prediction and is not held to the bound. Session 8:
+      // "scene outside the record"); there it is not a prediction and is not held to the bound. E.g.
       // the held-out N = 15 rod at beta 0.3 has force errors 5.3 % (level 3) and 4.6 % (level 4) against the
       // clamped ~2 % of N = 10 (the near field's across-flow load falls behind the pressure build-up
       // of rods longer than the fitted ones, calibration/data/near_field_coupling.txt).

@@ -92,12 +92,11 @@ TEST(calibration_CalibratedLevels, Level2ReproducesTheResolvedRigidRods) {
   EXPECT_GE(rods, 21) << "resolved rods of 2, 5 and 10 spheres at each calibrated beta expected";
 }
 
-// Session 8 missed this (the first fit with beta 0.75 rods): level 2's r at
-// beta 0.75 grew too slowly with the rod's length, N = 5 r - 1 = 0.047
-// against 0.063 resolved (-1.4 % on r), N = 10 0.064 against 0.094 (-2.8 %),
-// with a constant held-load growth k_held beta^2 (r fit chi2/dof 57). Since
-// session 9 k(beta), k_held(beta) are polynomials and beta 0.75 is resolved on
-// meshes 6-12 (the sphere-wall gap is 1-2 cells): r within 0.1 %.
+// With a constant held-load growth k_held beta^2 (r fit chi2/dof 57) level
+// 2's r at beta 0.75 grows too slowly with the rod's length: N = 5 r - 1 =
+// 0.047 against 0.063 resolved (-1.4 % on r), N = 10 0.064 against 0.094
+// (-2.8 %). With k(beta), k_held(beta) polynomials, and beta 0.75 resolved on
+// meshes 6-12 (the sphere-wall gap is 1-2 cells), r is within 0.1 %.
 TEST(calibration_CalibratedLevels, Level2RAtBeta075Within1Percent) {
   int rods = 0;
   for (const auto& s : resolved_series())
@@ -133,7 +132,7 @@ TEST(calibration_CalibratedLevels, Level2DriftAnisotropyAsResolved) {
 // and 8, values on 8; lateral faces 2 H: calibration/data/
 // resolved_beta005_series.csv) against levels 2-4 with the shipped table and
 // near field, extrapolated: totals within 10 %, free velocities within 3 %,
-// r within 1 % (session 11, mesh 8: level 2 totals -3.1..+3.2 %, level 3
+// r within 1 % (measured on mesh 8: level 2 totals -3.1..+3.2 %, level 3
 // -1.8..-0.4 %, level 4 -2.1..-0.8 %, velocities <= 0.23 %, r - 1 within
 // 1.5e-3; the mesh-8 loads are 0.2-1.1 % below mesh 6's).
 TEST(calibration_CalibratedLevels, LevelsTwoToFourAtBeta005AsResolved) {

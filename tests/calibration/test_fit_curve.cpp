@@ -114,7 +114,7 @@ TEST(calibration_CurveFit, RodVelocitiesAndTheirRatioRecovered) {
 }
 
 TEST(calibration_CurveFit, ShieldingAndPolynomialGrowthsRecovered) {
-  // The session-9 layout (RodLayout): along the axis the 3-D shielding
+  // The shipped layout (RodLayout): along the axis the 3-D shielding
   // e ln(n)/n (e = 0.10), across it g = beta^2 (0.26 + 0.07 beta), the held
   // growth g_held = beta^2 (0.25 + 0.13 beta - 0.16 beta^2); exact synthetic
   // rods of n = 2, 5, 10, 20 at six beta give every block back, the

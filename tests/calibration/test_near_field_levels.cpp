@@ -15,7 +15,7 @@
 //    15 at beta 0.3: betas and a length in no fitted row) predicted within
 //    the same tolerances;
 //  - the built-in near field is the shipped file calibration/data/near_field_coupling.txt.
-// Measured (session 8, shipped fit): totals within 5.3 %, profile RMS within
+// Measured (shipped fit): totals within 5.3 %, profile RMS within
 // 5.4 % (both the held-out N = 15 rod across), free velocity within 1.01 %,
 // r within 0.43 % (held-out N = 15), at both levels; the fit's report is in
 // the file's comments.

@@ -6,7 +6,7 @@
   its header line to its closing brace; Python: ast's extent), except in
   generated data files (a "Do not edit: regenerate" header: one static
   table per function);
-- comments say why, not history: no "issue N" references, no citation of
+- comments say why, not history: no "issue N" or "session N" references, no citation of
   the project brief outside this repository (DESIGN.md);
 - liggghts-package/src: support/, screen/ and the styles' helpers do not
   include a style's header (only app/ registers styles).
@@ -24,7 +24,7 @@ MAX_FUNCTION_LINES = 120
 SOURCE_DIRS = ["drag-models", "liggghts-package", "calibration", "tests", "examples", "scripts", ".ci"]
 CXX = (".cpp", ".h", ".C", ".H", ".hpp")
 SKIP_DIRS = {"build", "third_party-build", "__pycache__", ".git"}
-HISTORY = re.compile(r"\bissues?\s*#?\d+|\bDESIGN\.md\b", re.IGNORECASE)
+HISTORY = re.compile(r"\bissues?\s*#?\d+|\bsession[- ]?\d+|(?<!doc/)\bDESIGN\.md\b", re.IGNORECASE)
 
 
 def source_files(root):

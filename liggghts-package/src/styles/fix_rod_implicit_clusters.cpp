@@ -224,9 +224,9 @@ void FixRodImplicit::account_guard_report(const std::string &who, const hsrod::G
   }
   if (!limits_.adaptive && report.substeps >= kManySubsteps && !substeps_warned_ && comm->me == 0) {
     // Each substep met the guard's limits, but the run carries the
-    // first-order error of whatever the guard does not measure (stress
-    // matrix, session 12: a rod released from a pinned state at 250x the
-    // default step ends with the dt/10 run, 8 deg from the converged one).
+    // first-order error of whatever the guard does not measure (in the stress
+    // matrix a rod released from a pinned state at 250x the default step
+    // ends with the dt/10 run, 8 deg from the converged one).
     char msg[640];
     std::snprintf(msg, sizeof(msg),
                   "fix rod/implicit: %s at step " BIGINT_FORMAT ": the accuracy guard cut the step of dt = %g s "

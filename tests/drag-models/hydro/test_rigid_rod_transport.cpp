@@ -149,9 +149,9 @@ TEST(RigidRodTransport, LocalRodReproducesResolvedRigidRods) {
   // held-in-flow load / (3 pi mu d U_mean), lambda = D / R, r = lambda_perp /
   // lambda_par), every rod length and beta of the record, fitted or held out:
   // totals within 10 %, free velocity within 3 %, r within 1 % at every beta
-  // (0.1-0.75). Session 8 missed r at beta 0.75 (N = 5: -1.4 %, N = 10:
-  // -2.8 %): the held-load growth k_held beta^2 was too stiff in beta; since
-  // session 9 k(beta) and k_held(beta) are polynomials and r is within 0.1 %.
+  // (0.1-0.75). The r check is what needs k(beta) and k_held(beta) as
+  // polynomials: a constant held-load growth k_held beta^2 is too stiff in
+  // beta and misses r at beta 0.75 (N = 5: -1.4 %, N = 10: -2.8 %).
   expect_local_rods();
 }
 

@@ -1,5 +1,5 @@
-// One linearly implicit overdamped step of a rod (DESIGN.md, "Time
-// integration and stability").
+// One linearly implicit overdamped step of a rod, stable at steps far
+// beyond the explicit limit of its stiff bonds and wall contacts.
 //
 // At the scales of a microfluidic rod the sphere inertia relaxes in
 // m / zeta ~ 1 us, far below the steps of interest, so the rod moves in the
@@ -143,11 +143,11 @@ class OverdampedRodSolver {
   void step(OverdampedRod& rod, const RodDrag& drag, double dt, const ChannelGeometry* geometry,
             const WallContactParameters* walls, OverdampedStepResult& result);
 
-  // One Newton iteration of the same backward-Euler step (issue 10, the
-  // pore "pop"): `rod` holds an iterate y* of the step that started at
-  // (start_positions, start_orientations) = y0, and the step is re-linearised
-  // about y* (bonds, wall and sphere contacts, their stiffness and the set of
-  // touching spheres all evaluated at y*):
+  // One Newton iteration of the same backward-Euler step (for a step whose
+  // contacts change within it): `rod` holds an iterate y* of the step that
+  // started at (start_positions, start_orientations) = y0, and the step is
+  // re-linearised about y* (bonds, wall and sphere contacts, their stiffness
+  // and the set of touching spheres all evaluated at y*):
   //   (R/dt + K(y*) + C/dt) (y - y*) = F_drive + F_ext + F_bonds(y*) + F_contacts(y*) - (R + C) (y* - y0) / dt,
   // the residual of backward Euler at y* (C: the friction secant about the
   // previous velocities, as in step). `rod` is moved to y; the result holds
@@ -166,7 +166,7 @@ class OverdampedRodSolver {
   int pattern_analyses() const;
 
   // The simplified-Newton correction of the last step (an error estimate
-  // that reuses the step's factorisation, issue 13): `rod` is the state the
+  // that reuses the step's factorisation): `rod` is the state the
   // last step produced, `drag` the drag it used. Evaluates the
   // backward-Euler residual at the new state y1,
   //   r = F_drive + F_ext + F_bonds(y1) + F_contacts(y1) - (R + C) dy / dt

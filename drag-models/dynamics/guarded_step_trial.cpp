@@ -223,7 +223,7 @@ void judge_newton_error(const GuardedCall& c, const RodDrag& drag, long level, S
   // another sphere) at the start or the end of the step makes the
   // Hertz force a near-discontinuity that the step's stiffness (without
   // the new contact) does not describe, and the simplified iteration
-  // overshoots (a rod pressed against the pore chattered between the
+  // overshoots (a rod pressed against the pore chatters between the
   // step and its correction); there, and where the solver keeps no
   // factors, step doubling (with the same drag: no trial evaluation).
   bool touching = r.wall_contact || r.self_contact;  // self-contact: the same Hertz impact

@@ -1,6 +1,7 @@
 // Substep control of the accuracy guard: the judges that reject a (sub)step
 // and choose the smaller substep of the retry (local truncation error,
 // growing motion, unconverged wall friction), and the refusal at the finest.
+#include "common/math_constants.h"
 #include "dynamics/guarded_step_internal.h"
 
 #include <algorithm>
@@ -11,7 +12,6 @@
 namespace hsrod::guard_detail {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // The substep a rejection asks for is aimed this far inside the limit (h^2
 // scaling for the truncation error, h for growth): a retry sized to exactly
 // the estimate fails again on the estimate's scatter.

@@ -5,7 +5,9 @@
 // Hertz equilibrium at a wall; the spring strain of a pulled rod; a sphere
 // sliding off a cylinder). Refusals in a fast stream and quiet steps at a
 // wall: test_guarded_step_decisions.cpp.
+#include "common/math_constants.h"
 #include "dynamics/guarded_step.h"
+#include "flow/uniform_flow.h"
 #include "hydro/hydrodynamic_model.h"
 #include "rod/rod_layout.h"
 
@@ -19,22 +21,8 @@ using namespace hsrod;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Fluid at rest (the rod is driven by external forces only).
-class StillFluid : public BackgroundFlow {
- public:
-  StillFluid() : geometry_(1.0, 1.0, 1.0, -0.5, -0.5) {}
-  Eigen::Vector2d velocity(double, double) const override { return Eigen::Vector2d::Zero(); }
-  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
-  double pressure(double, double) const override { return 0.0; }
-  double mean_velocity() const override { return 0.0; }
-  const ChannelGeometry& geometry() const override { return geometry_; }
-  std::string description() const override { return "still fluid"; }
-
- private:
-  ChannelGeometry geometry_;
-};
+UniformFlow still_fluid() { return UniformFlow::wide_slit(1.0, Eigen::Vector2d::Zero()); }
 
 struct CoupleScene {
   int n = 10;
@@ -62,7 +50,7 @@ CoupleRun run_couple(const CoupleScene& s, double dt, bool guarded) {
   const BeamBondMaterial material{s.youngs_modulus, 0.3, s.d, 0.0};
   OverdampedRod rod = make_overdamped_rod(make_rod_layout(spec), material, s.d);
   const auto model = make_hydrodynamic_model("isotropic", {1e-3, s.d / 0.15, s.d}, ConfinementTable::default_table());
-  const StillFluid fluid;
+  const UniformFlow fluid = still_fluid();
   RodGeometry geometry;
   geometry.sphere_diameter = s.d;
   RodDrag drag;
@@ -234,7 +222,7 @@ PullRun run_pull(double target_strain, int steps) {
   const Eigen::Vector3d axis = (rod.positions.back() - rod.positions.front()).normalized();
   const double force = target_strain * e * material.area();
   const auto model = make_hydrodynamic_model("isotropic", {1e-3, d / 0.6, d}, ConfinementTable::default_table());
-  const StillFluid fluid;
+  const UniformFlow fluid = still_fluid();
   RodGeometry geometry;
   geometry.sphere_diameter = d;
   RodDrag drag;
@@ -300,7 +288,7 @@ TEST(GuardedStep, DragIsEvaluatedOnlyAtAcceptedSubstepStarts) {
   rod.external_forces.front() = Eigen::Vector3d(0, s.couple_force, 0);
   rod.external_forces.back() = Eigen::Vector3d(0, -s.couple_force, 0);
   const auto model = make_hydrodynamic_model("isotropic", {1e-3, s.d / 0.15, s.d}, ConfinementTable::default_table());
-  const StillFluid fluid;
+  const UniformFlow fluid = still_fluid();
   RodGeometry geometry;
   geometry.sphere_diameter = s.d;
   int evaluations = 0;

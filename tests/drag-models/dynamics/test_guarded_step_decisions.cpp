@@ -3,6 +3,7 @@
 // folded bond), with the rod unchanged; moderate steps are taken whole as
 // the plain step; quiet steps at a wall are taken as their half steps only,
 // to the same states bit for bit. Closed forms: test_guarded_step.cpp.
+#include "common/math_constants.h"
 #include "dynamics/guarded_step.h"
 #include "hydro/hydrodynamic_model.h"
 #include "rod/rod_layout.h"
@@ -19,8 +20,6 @@
 using namespace hsrod;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A straight 10-sphere rod (15 MPa, 3 um spheres) and its level-2 drag in a
 // 1 m/s stream (hopeless steps: ~500 diameters per ms).

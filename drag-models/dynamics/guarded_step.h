@@ -1,11 +1,11 @@
-// Accuracy guard around the linearly implicit rod step (issue 10, item 3).
+// Accuracy guard around the linearly implicit rod step.
 //
 // OverdampedRodSolver::step (overdamped_rod_step.h) is one Newton step of
 // backward Euler: stable for any dt, but it loses accuracy without notice
 // when a step is large and it can carry a sphere through a wall in one
-// step. (A stiff rod turning used to lag because the tangent update
-// stretched the bonds it should only turn; the step's finite-rotation
-// update, dynamics/finite_rotation_update.h, removed that.) The guard takes the step on a copy of the rod, checks
+// step. (A turning stiff rod does not lag: the step's finite-rotation
+// update, dynamics/finite_rotation_update.h, turns its bonds without
+// stretching them.) The guard takes the step on a copy of the rod, checks
 //   - the largest sphere displacement (in diameters),
 //   - the largest change of any bond's axial strain, and the largest
 //     absolute axial strain (a rod over-strained by steps that each stretch
@@ -64,7 +64,8 @@ struct StepGuardLimits {
   double max_strain_change = 0.01;  // largest change of a bond's axial strain per (sub)step [-]
   // Largest |axial strain| of any bond after a (sub)step [-]: beyond it the
   // beam bonds (small-strain elasticity) and the reduced drag no longer
-  // describe the rod (issue 10's stress bound).
+  // describe the rod (the change limit alone lets steps that each stretch
+  // it a little add up to any strain).
   double max_bond_strain = 0.5;
   // Newton (linearisation) error of a (sub)step: the largest displacement of
   // the Newton correction (or of step doubling, see above), relative
@@ -81,10 +82,11 @@ struct StepGuardLimits {
   NewtonCheck newton_check = NewtonCheck::kWhenSuspect;
   double suspect_bond_load = 0.05;  // [-]
   double max_overlap = 0.1;         // largest new overlap with a wall [sphere radii]
-  // Newton iterations on the wall-contact set (issue 10, the pore "pop"). The
-  // linearised step knows only the contacts touching at its start, so a
-  // sphere it carries onto a wall ends inside it, unresisted, by up to the
-  // step's displacement (and a contact it releases pulls as a linear spring).
+  // Newton iterations on the wall-contact set (against the "pop" of a rod
+  // off a pore wall). The linearised step knows only the contacts touching
+  // at its start, so a sphere it carries onto a wall ends inside it,
+  // unresisted, by up to the step's displacement (and a contact it releases
+  // pulls as a linear spring).
   // The stored Hertz force of that overlap grows as E delta^(3/2): for
   // E = 1.5e12 Pa a 100 nm overlap of a 3 um sphere is 0.08 N, 5e4 times the
   // drag; released in the next step it flings the rod ~1 um per step at any
@@ -107,7 +109,7 @@ struct StepGuardLimits {
   // every bond after the step); a caller that reports them only on demand
   // evaluates bond_strain_and_energy itself when asked.
   bool report_bond_state = true;
-  // Accuracy-controlled substeps (issue 13, "steps where the motion is";
+  // Accuracy-controlled substeps (the steps go where the motion is;
   // off by default: one step of dt where the checks above pass, fixed and
   // bit-reproducible). With `adaptive`, a (sub)step of h is also rejected
   // when its local truncation error, estimated from the change of the

@@ -1,38 +1,28 @@
-// Accuracy guard of the implicit rod step (issue 10, item 3): a step whose
-// linearisation error, displacement or wall crossing is too large is taken as
-// substeps or refused, never silently accepted. Checked against closed forms
-// (rigid rotation of a stiff rod under a couple; Hertz equilibrium at a wall).
+// The accuracy guard of the implicit rod step against closed forms: a step
+// whose linearisation error, displacement or wall crossing is too large is
+// taken as substeps or refused, never silently accepted, and lands where
+// the exact motion does (rigid rotation of a stiff rod under a couple;
+// Hertz equilibrium at a wall; the spring strain of a pulled rod; a sphere
+// sliding off a cylinder). Refusals in a fast stream and quiet steps at a
+// wall: test_guarded_step_decisions.cpp.
+#include "common/math_constants.h"
 #include "dynamics/guarded_step.h"
+#include "flow/uniform_flow.h"
 #include "hydro/hydrodynamic_model.h"
 #include "rod/rod_layout.h"
-#include "rod_fixtures.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
-#include <limits>
+#include <string>
 
 using namespace hsrod;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Fluid at rest (the rod is driven by external forces only).
-class StillFluid : public BackgroundFlow {
- public:
-  StillFluid() : geometry_(1.0, 1.0, 1.0, -0.5, -0.5) {}
-  Eigen::Vector2d velocity(double, double) const override { return Eigen::Vector2d::Zero(); }
-  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
-  double pressure(double, double) const override { return 0.0; }
-  double mean_velocity() const override { return 0.0; }
-  const ChannelGeometry& geometry() const override { return geometry_; }
-  std::string description() const override { return "still fluid"; }
-
- private:
-  ChannelGeometry geometry_;
-};
+UniformFlow still_fluid() { return UniformFlow::wide_slit(1.0, Eigen::Vector2d::Zero()); }
 
 struct CoupleScene {
   int n = 10;
@@ -60,7 +50,7 @@ CoupleRun run_couple(const CoupleScene& s, double dt, bool guarded) {
   const BeamBondMaterial material{s.youngs_modulus, 0.3, s.d, 0.0};
   OverdampedRod rod = make_overdamped_rod(make_rod_layout(spec), material, s.d);
   const auto model = make_hydrodynamic_model("isotropic", {1e-3, s.d / 0.15, s.d}, ConfinementTable::default_table());
-  const StillFluid fluid;
+  const UniformFlow fluid = still_fluid();
   RodGeometry geometry;
   geometry.sphere_diameter = s.d;
   RodDrag drag;
@@ -100,16 +90,16 @@ CoupleRun run_couple(const CoupleScene& s, double dt, bool guarded) {
 }  // namespace
 
 TEST(GuardedStep, StiffRodTurnsAsTheRigidRodInPlainSteps) {
-  // Issue 10: a very stiff rod (E = 1.5e12 Pa and 1.5e13 Pa) turned less at
-  // a large step than at a small one, silently. The tangent position update
-  // stretched each turning bond by phi^2 / 2; the next step's geometric
-  // stiffness of that spurious tension blocked the rotation on every other
-  // step: 45 % behind the closed form at dt = 4e-6 s (and still at 4e-7 s).
+  // A very stiff rod (E = 1.5e12 Pa and 1.5e13 Pa) must turn as much at a
+  // large step as at a small one. A tangent position update would stretch
+  // each turning bond by phi^2 / 2, and the next step's geometric stiffness
+  // of that spurious tension would block the rotation on every other step
+  // (45 % behind the closed form at dt = 4e-6 s, and still at 4e-7 s).
   // With finite bond rotations (dynamics/finite_rotation_update.h) the plain
   // step follows the rigid rotation to backward Euler's first-order error
   // (a dt / 2 = 1 % at a dt = 0.0195 rad per step; 50 steps of 4e-6 s), and
-  // the guard accepts every step whole (its co-rotated Newton estimate no
-  // longer mistakes the turned stiff axis for an error).
+  // the guard accepts every step whole (its co-rotated Newton estimate does
+  // not mistake the turned stiff axis for an error).
   for (double youngs_modulus : {1.5e12, 1.5e13}) {
     CoupleScene s;
     s.youngs_modulus = youngs_modulus;
@@ -161,13 +151,13 @@ TEST(GuardedStep, StepIntoAWallIsSubdividedAndEndsAtTheHertzEquilibrium) {
 }
 
 TEST(GuardedStep, StiffSphereReachingAWallInTheStepStopsAtTheBackwardEulerContactForce) {
-  // Issue 10, the pore "pop": a step that carries a sphere onto a wall it
+  // The "pop" off a pore wall: a step that carries a sphere onto a wall it
   // did not touch at the step's start has no contact stiffness in its
   // linearisation, so the sphere ends inside the wall by its free travel
   // minus the gap. With E = 1.5e12 Pa a 100 nm overlap of a 3 um sphere is a
-  // Hertz force of ~0.08 N (here 9e7 times the push), within the old
-  // overlap limit (0.1 r = 150 nm); released in the next step it flung the
-  // stiff rod wedged in the pore ~1 um per substep at any substep. Backward
+  // Hertz force of ~0.08 N (here 9e7 times the push), within the overlap
+  // limit (0.1 r = 150 nm); released in the next step it flings a stiff rod
+  // wedged in the pore ~1 um per substep at any substep. Backward
   // Euler's own end state has the Hertz force that balances the push less
   // the drag of crossing the gap: zeta (g + delta) / h = F - F_H(delta),
   // solved here by bisection; the guard's Newton iterations on the contact
@@ -207,99 +197,6 @@ TEST(GuardedStep, StiffSphereReachingAWallInTheStepStopsAtTheBackwardEulerContac
   EXPECT_GT(report.contact_iterations, 0);
 }
 
-// A straight 10-sphere rod (15 MPa, 3 um spheres) and its level-2 drag in a
-// 1 m/s stream (hopeless steps: ~500 diameters per ms).
-OverdampedRod ten_sphere_rod() {
-  RodSpec spec;
-  spec.number_of_sections = 10;
-  spec.sphere_diameter = 3e-6;
-  return make_overdamped_rod(make_rod_layout(spec), {15e6, 0.3, 3e-6, 0.0}, 3e-6);
-}
-RodDrag drag_in_a_fast_stream(const OverdampedRod& rod) {
-  const auto model = make_hydrodynamic_model("local", {1e-3, 20e-6, 3e-6}, ConfinementTable::default_table());
-  const hsrod_test::UniformStream stream;
-  RodGeometry g;
-  g.sphere_diameter = 3e-6;
-  g.positions = rod.positions;
-  RodDrag drag;
-  model->evaluate(g, stream, drag);
-  return drag;
-}
-// The message of a step of 1 ms the guard must refuse ("" if it was taken).
-std::string refusal_of_a_1ms_step(OverdampedRod& rod, const RodDrag& drag) {
-  OverdampedRodSolver solver;
-  try {
-    guarded_rod_step(solver, rod, drag, {}, 1e-3, nullptr, nullptr);
-  } catch (const StepRefused& e) {
-    return e.what();
-  }
-  return "";
-}
-
-TEST(GuardedStep, HopelessStepIsRefusedWithTheFiguresAndTheRodIsUnchanged) {
-  // dt = 1e-3 s in a 1 m/s stream: ~500 diameters per step; even 1024
-  // substeps move 0.5 d each: refused, naming dt and the displacement.
-  OverdampedRod rod = ten_sphere_rod();
-  const RodDrag drag = drag_in_a_fast_stream(rod);
-  const std::vector<Eigen::Vector3d> before = rod.positions;
-  const std::string m = refusal_of_a_1ms_step(rod, drag);
-  ASSERT_FALSE(m.empty()) << "expected StepRefused";
-  EXPECT_NE(m.find("dt = 0.001 s refused"), std::string::npos) << m;
-  EXPECT_NE(m.find("dt / 1024"), std::string::npos) << m;
-  EXPECT_NE(m.find("limit 0.25 d"), std::string::npos) << m;
-  EXPECT_EQ(rod.positions, before);
-  OverdampedRodSolver solver;
-  for (double bad : {0.0, -1e-6, std::numeric_limits<double>::quiet_NaN(), HUGE_VAL})
-    EXPECT_THROW(guarded_rod_step(solver, rod, drag, {}, bad, nullptr, nullptr), std::invalid_argument) << bad;
-}
-
-// The same hopeless step of a rod whose end sphere has turned 180 deg
-// against its neighbour (a beam bond wound past where its restoring torque
-// flips: the soft rods refused at the pore cylinders, examples/regime-map):
-// the refusal names the fold and says a smaller timestep does not undo it.
-TEST(GuardedStep, RefusalOfAFoldedRodNamesTheFoldedBond) {
-  OverdampedRod rod = ten_sphere_rod();
-  rod.orientations[9] = Eigen::Quaterniond(Eigen::AngleAxisd(kPi * 179.0 / 180.0, Eigen::Vector3d::UnitZ()));
-  const RodDrag drag = drag_in_a_fast_stream(rod);
-  const std::string m = refusal_of_a_1ms_step(rod, drag);
-  ASSERT_FALSE(m.empty()) << "expected StepRefused";
-  EXPECT_NE(m.find("the bond between spheres 8 and 9 is turned 179 deg"), std::string::npos) << m;
-  EXPECT_NE(m.find("a smaller timestep does not undo the fold"), std::string::npos) << m;
-}
-
-TEST(GuardedStep, ModerateStepsAreTakenWholeAndMatchThePlainStep) {
-  // Where the plain step is accurate the guard changes nothing: the pore
-  // scene's stiff rod (15 MPa) across a uniform stream at dt = 1e-5 s.
-  RodSpec spec;
-  spec.number_of_sections = 10;
-  spec.sphere_diameter = 3e-6;
-  spec.angle = 0.0;
-  OverdampedRod a = make_overdamped_rod(make_rod_layout(spec), {15e6, 0.3, 3e-6, 0.0}, 3e-6);
-  OverdampedRod b = a;
-  const auto model = make_hydrodynamic_model("nonlocal", {1e-3, 20e-6, 3e-6}, ConfinementTable::default_table());
-  // A slow stream (1 mm/s): 0.005 d per step.
-  class Slow : public hsrod_test::UniformStream {
-   public:
-    Eigen::Vector2d velocity(double, double) const override { return {1e-3, 0.0}; }
-  } stream;
-  RodGeometry g;
-  g.sphere_diameter = 3e-6;
-  RodDrag drag;
-  OverdampedRodSolver sa, sb;
-  int substeps = 0;
-  for (int k = 0; k < 20; ++k) {
-    g.positions = a.positions;
-    model->evaluate(g, stream, drag);
-    sa.step(a, drag, 1e-5, nullptr, nullptr);
-    g.positions = b.positions;
-    model->evaluate(g, stream, drag);
-    substeps += guarded_rod_step(sb, b, drag, {}, 1e-5, nullptr, nullptr).substeps;
-  }
-  EXPECT_EQ(substeps, 20);
-  // (The guard keeps the step-doubled result: equal to the plain one to round-off.)
-  for (int i = 0; i < 10; ++i) EXPECT_LT((a.positions[i] - b.positions[i]).norm(), 1e-8 * 3e-6);
-}
-
 namespace {
 
 // A straight soft rod (E = 15 kPa, the stress matrix's soft rod) along x,
@@ -325,7 +222,7 @@ PullRun run_pull(double target_strain, int steps) {
   const Eigen::Vector3d axis = (rod.positions.back() - rod.positions.front()).normalized();
   const double force = target_strain * e * material.area();
   const auto model = make_hydrodynamic_model("isotropic", {1e-3, d / 0.6, d}, ConfinementTable::default_table());
-  const StillFluid fluid;
+  const UniformFlow fluid = still_fluid();
   RodGeometry geometry;
   geometry.sphere_diameter = d;
   RodDrag drag;
@@ -363,10 +260,10 @@ TEST(GuardedStep, RodPulledToAModerateStrainSettlesAtTheSpringStrain) {
 }
 
 TEST(GuardedStep, OverStrainedRodIsRefusedWithTheFigures) {
-  // Issue 10's stress matrix: soft rods at dt = 1e-4 s ended with bond
-  // strains 0.70-1.18 and rc 0, because the guard limited only the strain
-  // change per step. Pulled to F / (E A) = 0.8, the run stops, naming the
-  // strain and the bound, before any bond exceeds it.
+  // A limit on the strain change per step alone lets soft rods at
+  // dt = 1e-4 s end with bond strains of 0.70-1.18 and exit code 0. Pulled
+  // to F / (E A) = 0.8, the run stops, naming the strain and the bound,
+  // before any bond exceeds it.
   const PullRun r = run_pull(0.8, 400);
   std::printf("pull to strain 0.8: %s, strain before %.4f\n", r.refused ? r.message.c_str() : "accepted", r.strain);
   ASSERT_TRUE(r.refused) << "accepted at strain " << r.strain;
@@ -377,8 +274,8 @@ TEST(GuardedStep, OverStrainedRodIsRefusedWithTheFigures) {
 }
 
 TEST(GuardedStep, DragIsEvaluatedOnlyAtAcceptedSubstepStarts) {
-  // Issue 9: a stateful model (level 4's windows) must advance only along
-  // the accepted path. The stiff rod under a couple needs substeps and
+  // A stateful model (level 4's windows) must advance only along the
+  // accepted path. The stiff rod under a couple needs substeps and
   // Newton checks at every one (kAlways): each drag evaluation must be at the
   // start of an accepted substep (substeps - 1 per step), none at rejected
   // attempts or at trial midpoints.
@@ -391,7 +288,7 @@ TEST(GuardedStep, DragIsEvaluatedOnlyAtAcceptedSubstepStarts) {
   rod.external_forces.front() = Eigen::Vector3d(0, s.couple_force, 0);
   rod.external_forces.back() = Eigen::Vector3d(0, -s.couple_force, 0);
   const auto model = make_hydrodynamic_model("isotropic", {1e-3, s.d / 0.15, s.d}, ConfinementTable::default_table());
-  const StillFluid fluid;
+  const UniformFlow fluid = still_fluid();
   RodGeometry geometry;
   geometry.sphere_diameter = s.d;
   int evaluations = 0;
@@ -419,66 +316,6 @@ TEST(GuardedStep, DragIsEvaluatedOnlyAtAcceptedSubstepStarts) {
   EXPECT_GT(steps_with_substeps, 5);  // the case exercises rejections
 }
 
-TEST(GuardedStep, QuietStepsAtAWallSkipTheFullStepAndKeepTheSameStates) {
-  // A rod of 2x2 sections (the aspect-ratio-5 rods of Figs. 10b/11b) pushed
-  // against the side wall y = 0 comes to rest on it within a few steps (the
-  // Hertz contact relaxes in ~1e-8 s); from then on every step starts at the
-  // wall and goes to step doubling. Stepped with one workspace, the guard
-  // takes these quiet steps as their two half steps only (2 solves, not 3);
-  // with a fresh workspace per step it always takes the full step too. The
-  // states must be the same to the last bit, and at rest the wall carries
-  // the whole push (force balance).
-  const double d = 3e-6, push = 1e-10, dt = 2e-6;
-  RodSpec spec;
-  spec.number_of_sections = 6;
-  spec.sphere_diameter = d;
-  spec.angle = 0.5 * kPi;  // along x
-  spec.section_rows = 2;
-  spec.section_layers = 2;
-  spec.centre = Eigen::Vector3d(5e-4, 0.999 * 0.5 * d + 0.5 * d, 10e-6);  // lower row just touching y = 0
-  const OverdampedRod start = make_overdamped_rod(make_rod_layout(spec), {15e6, 0.3, d, 0.0}, d);
-  const int n = start.size();
-  ASSERT_EQ(n, 24);
-  ChannelGeometry channel(1e-3, 1e-4, 20e-6);
-  WallContactParameters walls;
-  walls.youngs_modulus = 15e6;
-  RodDrag drag;
-  drag.resize(n);
-  for (int i = 0; i < n; ++i) {
-    drag.resistance[i] = 3 * kPi * 1e-3 * d * Eigen::Matrix3d::Identity();
-    drag.rotational_resistance[i] = kPi * 1e-3 * d * d * d;
-  }
-  OverdampedRod reused = start, fresh = start;
-  for (OverdampedRod* rod : {&reused, &fresh}) {
-    for (Eigen::Vector3d& f : rod->external_forces) f = Eigen::Vector3d(0, -push, 0);
-    rod->velocities.assign(n, Eigen::Vector3d::Zero());  // as fix rod/implicit gives them
-    rod->angular_velocities.assign(n, Eigen::Vector3d::Zero());
-  }
-  OverdampedRodSolver reused_solver, fresh_solver;
-  GuardWorkspace workspace;
-  const StepGuardLimits limits;
-  const int steps = 200;
-  double wall_force = 0.0;
-  for (int k = 0; k < steps; ++k) {
-    const std::vector<Eigen::Vector3d> before = reused.positions;
-    const GuardedStepReport r = guarded_rod_step(reused_solver, reused, drag, {}, dt, &channel, &walls, limits, workspace);
-    GuardWorkspace once;
-    guarded_rod_step(fresh_solver, fresh, drag, {}, dt, &channel, &walls, limits, once);
-    for (int i = 0; i < n; ++i) {
-      ASSERT_EQ(reused.positions[i], fresh.positions[i]) << "step " << k << " sphere " << i;
-      ASSERT_EQ(reused.orientations[i].coeffs(), fresh.orientations[i].coeffs()) << "step " << k << " sphere " << i;
-      reused.velocities[i] = fresh.velocities[i] = (reused.positions[i] - before[i]) / dt;
-    }
-    wall_force = r.result.wall_force;
-  }
-  std::printf("2x2 rod at the wall: %ld of %d steps quiet; solves %ld (one workspace) against %ld (fresh)\n",
-              workspace.quiet_steps, steps, reused_solver.statistics().steps, fresh_solver.statistics().steps);
-  EXPECT_GT(workspace.quiet_steps, steps - 10);
-  EXPECT_LT(reused_solver.statistics().steps, 2 * steps + 30);
-  EXPECT_EQ(fresh_solver.statistics().steps, 3 * steps);
-  EXPECT_NEAR(wall_force, n * push, 1e-6 * n * push);
-}
-
 namespace {
 
 // A sphere pushed by a constant force F along x onto the upstream side of a
@@ -487,7 +324,7 @@ namespace {
 // negligible) the tangential force F sin(theta) against the drag zeta
 // rho dtheta/dt gives tan(theta/2) = tan(theta0/2) exp(lambda t),
 // lambda = F / (zeta rho): an unstable state left at the rate lambda, the
-// release of a rod pinned across a pore (stress matrix, session 11).
+// release of a rod pinned across a pore.
 struct SlidingOffACylinder {
   static constexpr double r = 1.5e-6, cylinder_radius = 20e-6, rho = cylinder_radius + r;
   static constexpr double push = 1e-9, theta0 = 0.01;  // [N], [rad]

@@ -1,4 +1,4 @@
-// Level 4 of the fidelity ladder (DESIGN.md): two-way gap-averaged Brinkman.
+// Level 4 of the fidelity ladder: two-way gap-averaged Brinkman.
 // The rod is a moving obstacle in the planform flow, solved on a window
 // around it that includes the scene's walls and obstacles (the pore), so the
 // interaction of the spheres with each other and with the walls comes from
@@ -131,7 +131,7 @@ class TwoWayWindowModel : public LocalDragBase {
   using HydrodynamicModel::evaluate;
   // `state`: a TwoWayWindowState (null: a fresh one for this call).
   void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState* state) const override;
-  // Several rods (issue 11): one window around all of them, its fine zone
+  // Several rods: one window around all of them, its fine zone
   // spanning every rod, so that each rod's obstruction disturbs the flow
   // the others see (the mobility M between all their footprints, walls
   // included), exactly as the spheres of one rod interact; the near field
@@ -152,7 +152,7 @@ class TwoWayWindowModel : public LocalDragBase {
   double interaction_reach() const override;
   // Cells of the window the model would place for `rod` in `flow` now, and
   // the limit above which it refuses it (options.max_window_cells): for a
-  // check before the run (bounded work, issue 10).
+  // check before the run, so that a run never starts on unbounded work.
   long window_cells_for(const RodGeometry& rod, const BackgroundFlow& flow) const;
   long max_window_cells() const { return options_.max_window_cells; }
   // The window against max_window_cells (twoway_window_resources.cpp).
@@ -187,7 +187,7 @@ class TwoWayWindowModel : public LocalDragBase {
   static constexpr double kOuterScreenings = 16.0;
   static constexpr double kOuterExtents = 4.0;
   // A rigid shift of the rod by this fraction of its distance to the nearest
-  // wall calls for a new solve (see evaluate_with).
+  // wall calls for a new solve (see needs_update).
   static constexpr double kWallShiftFraction = 0.125;
   // Largest in-plane turn of the rod [rad] between solves: the stored
   // resistance is turned with the rod (exact for the continuous problem
@@ -232,6 +232,13 @@ class TwoWayWindowModel : public LocalDragBase {
   using RodState = TwoWayWindowState::Rod;
 
   void evaluate_with(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, TwoWayWindowState& state) const;
+  // Whether the rod's stored resistance is stale (see "Cost control" above);
+  // if not, `turn` is the rod's in-plane turn since its last solve [rad].
+  bool needs_update(const RodGeometry& rod, const ChannelGeometry& geometry, const RodState& rod_state,
+                    double& turn) const;
+  // The background flow averaged over each sphere's footprint (2n entries) [m/s].
+  Eigen::VectorXd footprint_background(const RodGeometry& rod, const BackgroundFlow& flow,
+                                       const BrinkmanWindow& window) const;
   Footprint footprint(const BrinkmanWindow& window, const Eigen::Vector3d& centre) const;
   // The window lattice for the rod as it is now (its span, the way the flow carries it).
   WindowLattice lattice_for(const RodGeometry& rod, const BackgroundFlow& flow) const;
@@ -249,6 +256,9 @@ class TwoWayWindowModel : public LocalDragBase {
   // reaches one fine margin further (the way the flow carries the rod).
   WindowLattice window_lattice(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const ChannelGeometry& geometry,
                                const Eigen::Vector2i& travel) const;
+  // The square wall-free lattice of a free-lattice Green's table: 2 `cells`
+  // of size h [m] about the origin, graded out to `margin` [m] beyond them.
+  WindowLattice free_lattice(double h, int cells, double margin) const;
   void update_resistance(const RodGeometry& rod, const ChannelGeometry& geometry, RodState& rod_state,
                          TwoWayWindowStatistics& statistics) const;
   // In-plane footprint mobility M (2n x 2n) [m/(N s)] of the rod: the
@@ -258,6 +268,8 @@ class TwoWayWindowModel : public LocalDragBase {
   Eigen::MatrixXd footprint_mobility(const RodGeometry& rod, const ChannelGeometry& geometry,
                                      const BrinkmanWindow& window) const;
   std::shared_ptr<const LatticeGreenTable> free_lattice_table(double h, double kernel_width) const;
+  // Two scales: the near reach, both free-lattice tables and the fine self-mobility.
+  void build_two_scale_tables();
   // Weight of the fine-lattice correction for two spheres `distance` [m]
   // apart: 1 within near_reach_ / 2, smoothly 0 at near_reach_.
   double near_weight(double distance) const;

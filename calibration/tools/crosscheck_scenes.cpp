@@ -39,36 +39,164 @@
 
 using namespace hsrod::calib;
 
+namespace {
+
+struct Options {
+  std::string cases_path, out_path, table_path, near_field_path, label = "built-in",
+                                                                 levels = "isotropic,local,nonlocal,twoway";
+  std::string wall_record, wall_record_cpp;
+};
+
+void add_options(CLI::App& app, Options& o) {
+  app.add_option("cases", o.cases_path)->required()->check(CLI::ExistingFile);
+  app.add_option("output", o.out_path)->required();
+  app.add_option("--levels", o.levels, "models to check");
+  app.add_option("--table", o.table_path, "coefficient file (default: the built-in table)");
+  app.add_option("--near-field", o.near_field_path, "near-field coupling file of levels 3-4, or off (default: built-in)");
+  app.add_option("--label", o.label, "label of this table in the output");
+  app.add_option("--wall-record", o.wall_record, "write the worst errors per level, geometry and gap (CSV)");
+  app.add_option("--wall-record-cpp", o.wall_record_cpp, "write the near-wall rows as auto's built-in record (C++)");
+}
+
+// worst |error| of one level over the cases of a (geometry, beta, gap/d):
+// totals (per component where the component carries >= 20 % of |F|), profile RMS
+struct Cell {
+  double force = 0.0, rms = 0.0;
+  int cases = 0;
+};
+using Cells = std::map<std::tuple<std::string, double, double>, Cell>;  // (geometry, beta, gap/d)
+using Worst = std::map<std::string, std::pair<double, double>>;         // printed group -> (totals, RMS)
+
+// one case and level: OUT.csv rows (totals, profile RMS, per sphere), worst errors
+void compare_case(std::ostream& out, const std::string& label, const std::string& level, const SceneCase& c,
+                  const std::vector<Eigen::Vector2d>& m, Worst& worst, Cells& cells) {
+  Eigen::Vector2d tm = Eigen::Vector2d::Zero(), tr = Eigen::Vector2d::Zero();
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    tm += m[i];
+    tr += c.resolved[i];
+  }
+  char head[512];
+  std::snprintf(head, sizeof head, "%s,%s,%s,%s,%g,%zu,%g,%g,%g,%s", label.c_str(), level.c_str(), c.name.c_str(),
+                c.geometry.c_str(), c.beta, m.size(), c.gap_over_d, c.row_angle_deg, c.bend_deg, c.load.c_str());
+  char group_name[96];
+  if (c.geometry == "bent")
+    std::snprintf(group_name, sizeof group_name, "bent b%.2f", c.beta);
+  else
+    std::snprintf(group_name, sizeof group_name, "%s b%.2f gap %.1f d", c.geometry.c_str(), c.beta, c.gap_over_d);
+  const std::string group = group_name;
+  auto& w = worst[group];
+  for (int k = 0; k < 2; ++k) {
+    const double err = (tm[k] - tr[k]) / std::abs(tr[k]), err_mag = (tm[k] - tr[k]) / tr.norm();
+    out << head << ",F_" << "xy"[k] << ',' << tr[k] << ',' << tm[k] << ',' << err << ',' << err_mag << '\n';
+    if (std::abs(tr[k]) >= 0.2 * tr.norm()) {
+      w.first = std::max(w.first, std::abs(err));
+      Cell& cell = cells[{c.geometry, c.beta, c.gap_over_d}];
+      cell.force = std::max(cell.force, std::abs(err));
+    }
+  }
+  const double rms = profile_rms(m, c.resolved);
+  Cell& cell = cells[{c.geometry, c.beta, c.gap_over_d}];
+  cell.rms = std::max(cell.rms, rms);
+  ++cell.cases;
+  out << head << ",profile_rms,0,0," << rms << ',' << rms << '\n';
+  w.second = std::max(w.second, rms);
+  double mean = 0.0;
+  for (const auto& f : c.resolved) mean += f.norm() / c.resolved.size();
+  for (std::size_t i = 0; i < m.size(); ++i)
+    for (int k = 0; k < 2; ++k)
+      out << head << ",f" << "xy"[k] << '_' << (i + 1) << ',' << c.resolved[i][k] << ',' << m[i][k] << ','
+          << (m[i][k] - c.resolved[i][k]) / mean << ',' << (m[i][k] - c.resolved[i][k]) / mean << '\n';
+}
+
+// one level's worst errors: --wall-record rows, near-wall C++ rows, summary lines
+void report_level(const std::string& label, const std::string& level, const Cells& cells, const Worst& worst,
+                  std::ofstream& record, std::ostream& cpp_rows) {
+  for (const auto& [key, cell] : cells) {
+    if (!record.is_open()) break;
+    const auto& [geometry, beta, gap] = key;
+    record << level << ',' << geometry << ',' << beta << ',';
+    if (geometry == "bent")  // the wide slit: no wall within reach
+      record << "inf,inf,";
+    else
+      record << gap << ',' << gap * beta << ',';
+    record << cell.cases << ',' << cell.force << ',' << cell.rms << '\n';
+  }
+  for (const auto& [key, cell] : cells) {
+    const auto& [geometry, beta, gap] = key;
+    const hsrod::ModelEntry* entry = hsrod::find_model(level);
+    if (geometry == "bent" || !entry) continue;
+    cpp_rows << "      {" << entry->level << ", " << (geometry == "pore" ? "true" : "false") << ", " << beta << ", "
+             << gap << ", " << cell.force << ", " << cell.rms << "},\n";
+  }
+  for (const auto& [group, w] : worst)
+    std::printf("%-10s %-9s %-22s worst |error|: totals %6.1f %%, per-sphere profile RMS %6.1f %%\n", label.c_str(),
+                level.c_str(), group.c_str(), 100 * w.first, 100 * w.second);
+}
+
+// one level against every case
+void crosscheck_level(const std::string& label, const std::string& level, const std::vector<SceneCase>& cases,
+                      const hsrod::ConfinementTable& table, const hsrod::NearFieldCalibration& near_field,
+                      std::ostream& out, std::ofstream& record, std::ostream& cpp_rows) {
+  Worst worst;
+  Cells cells;
+  for (const SceneCase& c : cases) {
+    std::vector<Eigen::Vector2d> m;
+    try {
+      m = scene_forces(level, c, table, near_field);
+    } catch (const std::exception& e) {
+      std::printf("%-9s %-26s %-8s: not evaluated: %s\n", level.c_str(), c.name.c_str(), c.load.c_str(), e.what());
+      continue;
+    }
+    compare_case(out, label, level, c, m, worst, cells);
+  }
+  report_level(label, level, cells, worst, record, cpp_rows);
+}
+
+void write_wall_record_cpp(const std::string& path, const std::string& cases_path, const hsrod::ConfinementTable& table,
+                           const std::string& cpp_rows) {
+  std::ofstream f(path);
+  f << "// The near-wall record of `auto` (hydro/auto_model_choice.h), written by\n"
+       "//   /usr/bin/python3 calibration/validation/crosscheck_report.py build --scenes-only\n"
+       "// (hsrod_crosscheck_scenes ... --wall-record calibration/data/level_error_near_walls.csv\n"
+       "//  --wall-record-cpp drag-models/hydro/auto_near_wall_record.cpp).\n"
+       "// Do not edit: regenerate when a level changes (test\n"
+       "// calibration_AutoErrorModel.BuiltInNearWallRecordIsTheRecordedFile fails otherwise).\n"
+       "#include \"hydro/auto_model_choice.h\"\n\nnamespace hsrod {\n\n"
+       "const char* near_wall_error_record_provenance() {\n  return \"hsrod_crosscheck_scenes --wall-record on "
+    << (cases_path.find("calibration/data/") != std::string::npos
+            ? cases_path.substr(cases_path.find("calibration/data/"))
+            : cases_path)
+    << " (levels with their built-in near-wall correction), table: " << table.source()
+    << "\";\n}\n\n"
+       "const std::vector<NearWallErrorRow>& near_wall_error_record() {\n"
+       "  // level, pore, beta, gap_over_d, force_error, profile_rms\n"
+       "  static const std::vector<NearWallErrorRow> rows = {\n"
+    << cpp_rows << "  };\n  return rows;\n}\n\n}  // namespace hsrod\n";
+  std::printf("wrote %s\n", path.c_str());
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"Cross-check hsrod's reduced models against the resolved wall, pore and bent-rod cases"};
-  std::string cases_path, out_path, table_path, near_field_path, label = "built-in",
-                                                                  levels = "isotropic,local,nonlocal,twoway";
-  app.add_option("cases", cases_path)->required()->check(CLI::ExistingFile);
-  app.add_option("output", out_path)->required();
-  app.add_option("--levels", levels, "models to check");
-  app.add_option("--table", table_path, "coefficient file (default: the built-in table)");
-  app.add_option("--near-field", near_field_path, "near-field coupling file of levels 3-4, or off (default: built-in)");
-  app.add_option("--label", label, "label of this table in the output");
-  std::string wall_record;
-  app.add_option("--wall-record", wall_record, "write the worst errors per level, geometry and gap (CSV)");
-  std::string wall_record_cpp;
-  app.add_option("--wall-record-cpp", wall_record_cpp, "write the near-wall rows as auto's built-in record (C++)");
+  Options o;
+  add_options(app, o);
   CLI11_PARSE(app, argc, argv);
   try {
     const hsrod::ConfinementTable table =
-        table_path.empty() ? hsrod::ConfinementTable::default_table() : hsrod::ConfinementTable::read(table_path);
+        o.table_path.empty() ? hsrod::ConfinementTable::default_table() : hsrod::ConfinementTable::read(o.table_path);
     const hsrod::NearFieldCalibration near_field =
-        near_field_path.empty()    ? hsrod::NearFieldCalibration::built_in()
-        : near_field_path == "off" ? hsrod::NearFieldCalibration::off()
-                                   : hsrod::NearFieldCalibration::read(near_field_path);
-    const std::vector<SceneCase> cases = read_scene_cases(cases_path);
-    std::ofstream out(out_path);
+        o.near_field_path.empty()    ? hsrod::NearFieldCalibration::built_in()
+        : o.near_field_path == "off" ? hsrod::NearFieldCalibration::off()
+                                     : hsrod::NearFieldCalibration::read(o.near_field_path);
+    const std::vector<SceneCase> cases = read_scene_cases(o.cases_path);
+    std::ofstream out(o.out_path);
     out << "label,level,case,geometry,beta,n,gap_over_d,row_angle_deg,bend_deg,load,quantity,resolved,model,error,"
            "error_of_magnitude\n";
     out.precision(8);
     std::ofstream record;
-    if (!wall_record.empty()) {
-      record.open(wall_record);
+    if (!o.wall_record.empty()) {
+      record.open(o.wall_record);
       record << "# hsrod_crosscheck_scenes --wall-record: largest |model / resolved - 1| of the totals (components "
                 "carrying >= 20 % of |F|) and largest per-sphere profile RMS, over the cases (row angles, loads, "
                 "rod lengths) of each level, geometry, beta and gap; table: "
@@ -77,105 +205,12 @@ int main(int argc, char** argv) {
     }
     std::ostringstream cpp_rows;
     cpp_rows.precision(6);
-    std::stringstream levels_in(levels);
+    std::stringstream levels_in(o.levels);
     std::string level;
-    while (std::getline(levels_in, level, ',')) {
-      // worst |error| per (geometry, gap): totals (per component where the
-      // component carries >= 20 % of |F|), profile RMS
-      std::map<std::string, std::pair<double, double>> worst;
-      struct Cell {
-        double force = 0.0, rms = 0.0;
-        int cases = 0;
-      };
-      std::map<std::tuple<std::string, double, double>, Cell> cells;  // (geometry, beta, gap/d)
-      for (const SceneCase& c : cases) {
-        std::vector<Eigen::Vector2d> m;
-        try {
-          m = scene_forces(level, c, table, near_field);
-        } catch (const std::exception& e) {
-          std::printf("%-9s %-26s %-8s: not evaluated: %s\n", level.c_str(), c.name.c_str(), c.load.c_str(), e.what());
-          continue;
-        }
-        Eigen::Vector2d tm = Eigen::Vector2d::Zero(), tr = Eigen::Vector2d::Zero();
-        for (std::size_t i = 0; i < m.size(); ++i) {
-          tm += m[i];
-          tr += c.resolved[i];
-        }
-        char head[512];
-        std::snprintf(head, sizeof head, "%s,%s,%s,%s,%g,%zu,%g,%g,%g,%s", label.c_str(), level.c_str(), c.name.c_str(),
-                      c.geometry.c_str(), c.beta, m.size(), c.gap_over_d, c.row_angle_deg, c.bend_deg, c.load.c_str());
-        char group_name[96];
-        if (c.geometry == "bent")
-          std::snprintf(group_name, sizeof group_name, "bent b%.2f", c.beta);
-        else
-          std::snprintf(group_name, sizeof group_name, "%s b%.2f gap %.1f d", c.geometry.c_str(), c.beta, c.gap_over_d);
-        const std::string group = group_name;
-        auto& w = worst[group];
-        for (int k = 0; k < 2; ++k) {
-          const double err = (tm[k] - tr[k]) / std::abs(tr[k]), err_mag = (tm[k] - tr[k]) / tr.norm();
-          out << head << ",F_" << "xy"[k] << ',' << tr[k] << ',' << tm[k] << ',' << err << ',' << err_mag << '\n';
-          if (std::abs(tr[k]) >= 0.2 * tr.norm()) {
-            w.first = std::max(w.first, std::abs(err));
-            Cell& cell = cells[{c.geometry, c.beta, c.gap_over_d}];
-            cell.force = std::max(cell.force, std::abs(err));
-          }
-        }
-        const double rms = profile_rms(m, c.resolved);
-        Cell& cell = cells[{c.geometry, c.beta, c.gap_over_d}];
-        cell.rms = std::max(cell.rms, rms);
-        ++cell.cases;
-        out << head << ",profile_rms,0,0," << rms << ',' << rms << '\n';
-        w.second = std::max(w.second, rms);
-        double mean = 0.0;
-        for (const auto& f : c.resolved) mean += f.norm() / c.resolved.size();
-        for (std::size_t i = 0; i < m.size(); ++i)
-          for (int k = 0; k < 2; ++k)
-            out << head << ",f" << "xy"[k] << '_' << (i + 1) << ',' << c.resolved[i][k] << ',' << m[i][k] << ','
-                << (m[i][k] - c.resolved[i][k]) / mean << ',' << (m[i][k] - c.resolved[i][k]) / mean << '\n';
-      }
-      for (const auto& [key, cell] : cells) {
-        if (!record.is_open()) break;
-        const auto& [geometry, beta, gap] = key;
-        record << level << ',' << geometry << ',' << beta << ',';
-        if (geometry == "bent")  // the wide slit: no wall within reach
-          record << "inf,inf,";
-        else
-          record << gap << ',' << gap * beta << ',';
-        record << cell.cases << ',' << cell.force << ',' << cell.rms << '\n';
-      }
-      for (const auto& [key, cell] : cells) {
-        const auto& [geometry, beta, gap] = key;
-        const hsrod::ModelEntry* entry = hsrod::find_model(level);
-        if (geometry == "bent" || !entry) continue;
-        cpp_rows << "      {" << entry->level << ", " << (geometry == "pore" ? "true" : "false") << ", " << beta << ", "
-                 << gap << ", " << cell.force << ", " << cell.rms << "},\n";
-      }
-      for (const auto& [group, w] : worst)
-        std::printf("%-10s %-9s %-22s worst |error|: totals %6.1f %%, per-sphere profile RMS %6.1f %%\n", label.c_str(),
-                    level.c_str(), group.c_str(), 100 * w.first, 100 * w.second);
-    }
-    if (!wall_record_cpp.empty()) {
-      std::ofstream f(wall_record_cpp);
-      f << "// The near-wall record of `auto` (hydro/auto_model_choice.h), written by\n"
-           "//   /usr/bin/python3 calibration/validation/crosscheck_report.py build --scenes-only\n"
-           "// (hsrod_crosscheck_scenes ... --wall-record calibration/data/level_error_near_walls.csv\n"
-           "//  --wall-record-cpp drag-models/hydro/auto_near_wall_record.cpp).\n"
-           "// Do not edit: regenerate when a level changes (test\n"
-           "// calibration_AutoErrorModel.BuiltInNearWallRecordIsTheRecordedFile fails otherwise).\n"
-           "#include \"hydro/auto_model_choice.h\"\n\nnamespace hsrod {\n\n"
-           "const char* near_wall_error_record_provenance() {\n  return \"hsrod_crosscheck_scenes --wall-record on "
-        << (cases_path.find("calibration/data/") != std::string::npos
-                ? cases_path.substr(cases_path.find("calibration/data/"))
-                : cases_path)
-        << " (levels with their built-in near-wall correction), table: " << table.source()
-        << "\";\n}\n\n"
-           "const std::vector<NearWallErrorRow>& near_wall_error_record() {\n"
-           "  // level, pore, beta, gap_over_d, force_error, profile_rms\n"
-           "  static const std::vector<NearWallErrorRow> rows = {\n"
-        << cpp_rows.str() << "  };\n  return rows;\n}\n\n}  // namespace hsrod\n";
-      std::printf("wrote %s\n", wall_record_cpp.c_str());
-    }
-    std::printf("wrote %s\n", out_path.c_str());
+    while (std::getline(levels_in, level, ','))
+      crosscheck_level(o.label, level, cases, table, near_field, out, record, cpp_rows);
+    if (!o.wall_record_cpp.empty()) write_wall_record_cpp(o.wall_record_cpp, o.cases_path, table, cpp_rows.str());
+    std::printf("wrote %s\n", o.out_path.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hsrod_crosscheck_scenes: %s\n", e.what());
     return 1;

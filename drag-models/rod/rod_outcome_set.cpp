@@ -23,22 +23,34 @@ std::vector<std::pair<int, int>> touching_rod_pairs(const std::vector<Eigen::Vec
     b.lo = b.lo.cwiseMin(centres[i] - Eigen::Vector3d::Constant(radii[i]));
     b.hi = b.hi.cwiseMax(centres[i] + Eigen::Vector3d::Constant(radii[i]));
   }
+  // Sweep and prune along x: boxes sorted by their lower x edge, each
+  // compared only with the boxes that start before it ends, so a suspension
+  // of many rods costs O(R log R) plus the overlapping pairs, not O(R^2).
+  std::vector<const std::pair<const int, Box>*> order;
+  order.reserve(boxes.size());
+  for (const auto& entry : boxes) order.push_back(&entry);
+  std::sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->second.lo.x() < b->second.lo.x(); });
   std::vector<std::pair<int, int>> pairs;
-  for (auto a = boxes.begin(); a != boxes.end(); ++a)
-    for (auto b = std::next(a); b != boxes.end(); ++b) {
-      if ((a->second.hi.array() < b->second.lo.array()).any() || (b->second.hi.array() < a->second.lo.array()).any())
-        continue;
+  for (std::size_t ia = 0; ia < order.size(); ++ia) {
+    const Box& a = order[ia]->second;
+    for (std::size_t ib = ia + 1; ib < order.size() && order[ib]->second.lo.x() <= a.hi.x(); ++ib) {
+      const Box& b = order[ib]->second;
+      if ((a.hi.array() < b.lo.array()).any() || (b.hi.array() < a.lo.array()).any()) continue;
       bool touching = false;
-      for (std::size_t i : a->second.spheres) {
-        for (std::size_t j : b->second.spheres)
+      for (std::size_t i : a.spheres) {
+        for (std::size_t j : b.spheres)
           if ((centres[i] - centres[j]).norm() < radii[i] + radii[j]) {
             touching = true;
             break;
           }
         if (touching) break;
       }
-      if (touching) pairs.emplace_back(a->first, b->first);
+      if (touching) pairs.emplace_back(std::min(order[ia]->first, order[ib]->first),
+                                       std::max(order[ia]->first, order[ib]->first));
     }
+  }
+  // In rod-ID order, as callers and tests read them.
+  std::sort(pairs.begin(), pairs.end());
   return pairs;
 }
 

@@ -7,6 +7,7 @@
 #include "compute_hele_shaw_rod_load.h"
 #include "compute_rod_shape.h"
 #include "create_rod.h"
+#include "create_rods.h"
 #include "fix_cfd_torque_implicit.h"
 #include "fix_hele_shaw_drag.h"
 #include "fix_hele_shaw_field.h"

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Benchmark (not a ctest test): cost per rod-step of a suspension of rods of
+# 10 spheres (tests/benchmarks/scripts/in.many_rods: create_rods at area
+# fraction ~5 %, rod-rod Hertz contact with friction, straight channel,
+# beta 0.15) against the number of rods, at the levels in MODELS, median of
+# REPEATS runs, on one core; and the same 100-rod run on 1 and 2 MPI ranks
+# (largest difference of the final sphere positions, relative to d).
+# Usage: tests/benchmarks/bench_many_rods.sh [work-dir]   (after scripts/build.sh)
+# Environment: COUNTS (default "10 100 1000"), MODELS (default "local"),
+#              STEPS (default 100), REPEATS (default 3), HSROD_BUILD (build/).
+set -euo pipefail
+root="$(cd "$(dirname "$0")/../.." && pwd)"
+build="${HSROD_BUILD:-$root/build}"
+work="$(mkdir -p "${1:-$build/bench-many-rods}" && cd "${1:-$build/bench-many-rods}" && pwd)"
+script="$root/tests/benchmarks/scripts/in.many_rods"
+counts="${COUNTS:-10 100 1000}"
+models="${MODELS:-local}"
+steps="${STEPS:-100}"
+repeats="${REPEATS:-3}"
+cd "$work"
+echo "== many rods: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), $(git -C "$root" rev-parse --short HEAD), $steps steps"
+printf "%-8s %7s %12s %14s %16s\n" model rods "loop [s]" "per rod-step" "vs 100 rods"
+for model in $models; do
+  ref=""
+  for n in $counts; do
+    times=()
+    for _ in $(seq "$repeats"); do
+      t=$("$build/hsrod" -in "$script" -var nrods "$n" -var model "$model" -var steps "$steps" -log none -echo none |
+          awk '/^Loop time of/ {t = $4} END {print t}')
+      times+=("$t")
+    done
+    median=$(printf "%s\n" "${times[@]}" | sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}')
+    per=$(awk -v t="$median" -v n="$n" -v s="$steps" 'BEGIN {printf "%.3g", t / (n * s)}')
+    [ "$n" = 100 ] && ref=$per
+    growth=$([ -n "$ref" ] && awk -v a="$per" -v b="$ref" 'BEGIN {printf "%.2fx", a / b}' || echo "-")
+    printf "%-8s %7s %12s %12s s %16s\n" "$model" "$n" "$median" "$per" "$growth"
+  done
+done
+# 1 vs 2 ranks: the same rods and the same trajectory (to round-off).
+for ranks in 1 2; do
+  cp "$script" "ranks$ranks.in"
+  echo "write_dump all custom final$ranks.txt id x y z modify sort id" >> "ranks$ranks.in"
+  mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$build/hsrod" -in "ranks$ranks.in" -var nrods 100 \
+    -var model local -var steps "$steps" -log none -echo none > /dev/null
+done
+/usr/bin/python3 - <<'PY'
+import numpy as np
+a, b = (np.loadtxt(f"final{r}.txt", skiprows=9) for r in (1, 2))
+print(f"1 vs 2 ranks, 100 rods, {len(a)} spheres: largest position difference {np.abs(a[:, 1:] - b[:, 1:]).max() / 3e-6:.2e} d")
+PY

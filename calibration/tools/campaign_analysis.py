@@ -31,6 +31,8 @@ import sys
 
 import numpy as np
 
+import campaign_plan  # same directory: the plan's cases and their ids
+
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -74,10 +76,8 @@ def load_recorded(out):
     parameter, so a match proves the spec (d, U, mu, mesh, control) that the
     record itself does not store. Returned in the form of load_results, with
     the coefficients instead of the forces."""
-    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-    import hsrod_campaign  # noqa: E402  (same directory)
     with open(os.path.join(out, RECORD_PLAN)) as f:
-        specs = {c["id"]: c for c in hsrod_campaign.expand(json.load(f))}
+        specs = {c["id"]: c for c in campaign_plan.expand(json.load(f))}
     with open(os.path.join(out, RECORD_PROVENANCE)) as f:
         prov = json.load(f)
     source = repo_path(os.path.join(out, RECORD_CSV))

@@ -158,11 +158,9 @@ void print_rank_accounting(const std::vector<double> &all, int ranks) {
               makespan, case_cpu);
 }
 
-}  // namespace
-
 // --case-timeout: finite seconds >= 0 (CLI::NonNegativeNumber lets nan
 // through, which then meant no limit). "" when valid, else the message.
-static std::string check_case_timeout(std::string &text) {
+std::string check_case_timeout(std::string &text) {
   const std::string expected = "--case-timeout must be a finite number of seconds >= 0 (0: none), got " + text;
   try {
     std::size_t used = 0;
@@ -173,16 +171,8 @@ static std::string check_case_timeout(std::string &text) {
   }
 }
 
-int main(int argc, char **argv) {
-  MPI_Init(&argc, &argv);
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  std::setvbuf(stdout, nullptr, _IOLBF, 0);
-
-  Options options;
-  CLI::App app{"hsrod-sweep: runs an hsrod input script over a grid of variable values as an MPI task farm, "
-               "one CSV row per finished case (resumable). See liggghts-package/doc/hsrod_sweep.txt."};
+// The command line's options, with their help texts.
+void add_options(CLI::App &app, Options &options) {
   app.add_option("-i,--in", options.script, "LIGGGHTS input script")->required();
   app.add_option("--var", options.variables,
                  "NAME VALUES: sweep variable NAME over VALUES = comma-separated items, each a value, "
@@ -199,6 +189,107 @@ int main(int argc, char **argv) {
   app.add_flag("--fresh", options.fresh, "delete an existing result file and start over");
   app.add_flag("--keep-logs", options.keep_logs, "keep the screen log of every case (failed cases always keep theirs)");
   app.add_flag("--list", options.list, "print the cases and exit");
+}
+
+// One CSV column per name: a measure must not shadow another column.
+void check_columns(const std::vector<SweptVariable> &swept, const std::vector<Measure> &measures) {
+  std::set<std::string> columns = {"case", "status", "error", "wall_s", "cpu_s", "rank"};
+  for (const SweptVariable &v : swept)
+    if (!columns.insert(v.name).second) throw std::runtime_error("--var " + v.name + " is given twice");
+  for (const Measure &m : measures)
+    if (!columns.insert(m.name).second)
+      throw std::runtime_error("--measure " + m.name + ": a column of that name exists (a swept variable, another "
+                               "measure, or one of case, status, error, wall_s, cpu_s, rank); rename the measure");
+}
+
+// --list: the cases, one line each (rank 0).
+void print_cases(const CaseGrid &grid) {
+  std::printf("case");
+  for (const SweptVariable &v : grid.variables()) std::printf(",%s", v.name.c_str());
+  std::printf("\n");
+  for (std::size_t id = 0; id < grid.size(); ++id) {
+    std::printf("%zu", id);
+    for (const std::string &value : grid.values_of(id)) std::printf(",%s", value.c_str());
+    std::printf("\n");
+  }
+}
+
+// The pending cases on the task farm: rank 0 appends each finished case's
+// row and prints its progress, then every rank's accounting and the totals.
+void run_cases(const Options &options, const CaseGrid &grid, const std::vector<Measure> &measures,
+               const Prepared &prepared, ResultFile *results, int rank, int ranks) {
+  CaseSetup setup;
+  setup.script_path = prepared.script_path;
+  setup.log_dir = prepared.log_dir;
+  setup.keep_logs = options.keep_logs;
+  setup.timeout_seconds = options.case_timeout;
+  setup.measures = measures;
+  setup.rank = rank;
+
+  const std::size_t total = grid.size();
+  const int workers = ranks > 1 ? ranks - 1 : 1;  // rank 0 only schedules when there are workers
+  if (rank == 0)
+    std::printf("hsrod-sweep: %zu cases, %zu already in %s, %zu to run on %d worker(s) (%d MPI rank(s))\n", total,
+                prepared.already_finished, options.output.c_str(), prepared.pending.size(), workers, ranks);
+  const auto start = std::chrono::steady_clock::now();
+  std::size_t done_now = 0, failed_now = 0;
+  double case_seconds = 0.0, case_cpu_seconds = 0.0;
+  double record_seconds = 0.0;  // rank 0's time per finished case: row append, progress line, fsync share
+  auto last_sync = std::chrono::steady_clock::now();
+  const auto on_finished = [&](std::size_t id, const CaseOutcome &outcome) {
+    const auto record_start = std::chrono::steady_clock::now();
+    results->append(csv_row(grid, id, outcome));
+    ++done_now;
+    if (!outcome.ok) ++failed_now;
+    case_seconds += outcome.wall_seconds;
+    case_cpu_seconds += outcome.cpu_seconds;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::size_t remaining = prepared.pending.size() - done_now;
+    const double eta = elapsed / static_cast<double>(done_now) * static_cast<double>(remaining);
+    std::printf("[%zu/%zu] case %zu %s in %.3g s (%.3g s CPU, rank %d)%s%s | elapsed %s, ETA %s\n",
+                prepared.already_finished + done_now, total, id, outcome.ok ? "ok" : "FAILED", outcome.wall_seconds,
+                outcome.cpu_seconds, outcome.rank, outcome.ok ? "" : ": ", outcome.ok ? "" : outcome.error.c_str(),
+                format_seconds(elapsed).c_str(), format_seconds(eta).c_str());
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_sync > std::chrono::seconds(1) || done_now == prepared.pending.size()) {
+      results->sync();  // group fsync: see sweep_csv.h
+      last_sync = now;
+    }
+    record_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - record_start).count();
+  };
+  const FarmReport farm = run_task_farm(grid, setup, prepared.pending, on_finished);
+  // Per-rank accounting on rank 0: cases, busy and elapsed wall, case CPU, own CPU.
+  const double mine[6] = {static_cast<double>(farm.run), farm.busy_seconds, farm.elapsed_seconds,
+                          farm.case_cpu_seconds, farm.own_cpu_seconds, 0.0};
+  std::vector<double> all(rank == 0 ? 6 * static_cast<std::size_t>(ranks) : 0);
+  MPI_Gather(mine, 6, MPI_DOUBLE, all.data(), 6, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  if (rank == 0) {
+    print_rank_accounting(all, ranks);
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double n = done_now ? static_cast<double>(done_now) : 1.0;
+    std::printf("hsrod-sweep: finished %zu case(s) (%zu failed) in %s wall; per case: %.3g s wall and %.3g s CPU "
+                "in its process, %.3g s of sweep wall time; all %zu cases in %s\n",
+                done_now, failed_now, format_seconds(elapsed).c_str(), case_seconds / n, case_cpu_seconds / n,
+                elapsed / n, total, options.output.c_str());
+    std::printf("hsrod-sweep: scheduler: %.3g ms per finished case to write its row, print progress and fsync "
+                "(at most once a second)\n",
+                1e3 * record_seconds / n);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  MPI_Init(&argc, &argv);
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+
+  Options options;
+  CLI::App app{"hsrod-sweep: runs an hsrod input script over a grid of variable values as an MPI task farm, "
+               "one CSV row per finished case (resumable). See liggghts-package/doc/hsrod_sweep.txt."};
+  add_options(app, options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {
@@ -218,14 +309,7 @@ int main(int argc, char **argv) {
     for (const auto &[name, spec] : options.variables) swept.push_back({name, parse_values(name, spec)});
     grid = std::make_unique<CaseGrid>(swept);
     measures = parse_measures(options.measures);
-    // One CSV column per name: a measure must not shadow another column.
-    std::set<std::string> columns = {"case", "status", "error", "wall_s", "cpu_s", "rank"};
-    for (const SweptVariable &v : swept)
-      if (!columns.insert(v.name).second) throw std::runtime_error("--var " + v.name + " is given twice");
-    for (const Measure &m : measures)
-      if (!columns.insert(m.name).second)
-        throw std::runtime_error("--measure " + m.name + ": a column of that name exists (a swept variable, another "
-                                 "measure, or one of case, status, error, wall_s, cpu_s, rank); rename the measure");
+    check_columns(swept, measures);
     if (rank == 0 && !options.list) prepared = prepare(options, *grid, measures, results);
   } catch (const std::exception &e) {
     status = 1;
@@ -238,16 +322,7 @@ int main(int argc, char **argv) {
     return 1;
   }
   if (options.list) {
-    if (rank == 0) {
-      std::printf("case");
-      for (const SweptVariable &v : grid->variables()) std::printf(",%s", v.name.c_str());
-      std::printf("\n");
-      for (std::size_t id = 0; id < grid->size(); ++id) {
-        std::printf("%zu", id);
-        for (const std::string &value : grid->values_of(id)) std::printf(",%s", value.c_str());
-        std::printf("\n");
-      }
-    }
+    if (rank == 0) print_cases(*grid);
     MPI_Finalize();
     return 0;
   }
@@ -257,64 +332,7 @@ int main(int argc, char **argv) {
     std::fprintf(stderr, "hsrod-sweep: ERROR: rank %d cannot enter --workdir '%s'\n", rank, options.workdir.c_str());
     MPI_Abort(MPI_COMM_WORLD, 1);
   }
-
-  CaseSetup setup;
-  setup.script_path = prepared.script_path;
-  setup.log_dir = prepared.log_dir;
-  setup.keep_logs = options.keep_logs;
-  setup.timeout_seconds = options.case_timeout;
-  setup.measures = measures;
-  setup.rank = rank;
-
-  const std::size_t total = grid->size();
-  const int workers = ranks > 1 ? ranks - 1 : 1;  // rank 0 only schedules when there are workers
-  if (rank == 0)
-    std::printf("hsrod-sweep: %zu cases, %zu already in %s, %zu to run on %d worker(s) (%d MPI rank(s))\n", total,
-                prepared.already_finished, options.output.c_str(), prepared.pending.size(), workers, ranks);
-  const auto start = std::chrono::steady_clock::now();
-  std::size_t done_now = 0, failed_now = 0;
-  double case_seconds = 0.0, case_cpu_seconds = 0.0;
-  double record_seconds = 0.0;  // rank 0's time per finished case: row append, progress line, fsync share
-  auto last_sync = std::chrono::steady_clock::now();
-  const auto on_finished = [&](std::size_t id, const CaseOutcome &outcome) {
-    const auto record_start = std::chrono::steady_clock::now();
-    results->append(csv_row(*grid, id, outcome));
-    ++done_now;
-    if (!outcome.ok) ++failed_now;
-    case_seconds += outcome.wall_seconds;
-    case_cpu_seconds += outcome.cpu_seconds;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::size_t remaining = prepared.pending.size() - done_now;
-    const double eta = elapsed / static_cast<double>(done_now) * static_cast<double>(remaining);
-    std::printf("[%zu/%zu] case %zu %s in %.3g s (%.3g s CPU, rank %d)%s%s | elapsed %s, ETA %s\n",
-                prepared.already_finished + done_now, total, id, outcome.ok ? "ok" : "FAILED", outcome.wall_seconds,
-                outcome.cpu_seconds, outcome.rank, outcome.ok ? "" : ": ", outcome.ok ? "" : outcome.error.c_str(),
-                format_seconds(elapsed).c_str(), format_seconds(eta).c_str());
-    const auto now = std::chrono::steady_clock::now();
-    if (now - last_sync > std::chrono::seconds(1) || done_now == prepared.pending.size()) {
-      results->sync();  // group fsync: see sweep_csv.h
-      last_sync = now;
-    }
-    record_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - record_start).count();
-  };
-  const FarmReport farm = run_task_farm(*grid, setup, prepared.pending, on_finished);
-  // Per-rank accounting on rank 0: cases, busy and elapsed wall, case CPU, own CPU.
-  const double mine[6] = {static_cast<double>(farm.run), farm.busy_seconds, farm.elapsed_seconds,
-                          farm.case_cpu_seconds, farm.own_cpu_seconds, 0.0};
-  std::vector<double> all(rank == 0 ? 6 * static_cast<std::size_t>(ranks) : 0);
-  MPI_Gather(mine, 6, MPI_DOUBLE, all.data(), 6, MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  if (rank == 0) {
-    print_rank_accounting(all, ranks);
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double n = done_now ? static_cast<double>(done_now) : 1.0;
-    std::printf("hsrod-sweep: finished %zu case(s) (%zu failed) in %s wall; per case: %.3g s wall and %.3g s CPU "
-                "in its process, %.3g s of sweep wall time; all %zu cases in %s\n",
-                done_now, failed_now, format_seconds(elapsed).c_str(), case_seconds / n, case_cpu_seconds / n,
-                elapsed / n, total, options.output.c_str());
-    std::printf("hsrod-sweep: scheduler: %.3g ms per finished case to write its row, print progress and fsync "
-                "(at most once a second)\n",
-                1e3 * record_seconds / n);
-  }
+  run_cases(options, *grid, measures, prepared, results.get(), rank, ranks);
   MPI_Finalize();
   return 0;
 }

@@ -7,7 +7,7 @@ the source), at the planform points of the validation passage's rod band
 through the pore).
 
 Tolerance, per point, on |u_hsrod - u_resolved| / |u_resolved|: 3 %, the
-issue's budget for a free rod's velocity (a rod moves with the sampled flow,
+budget for a free rod's velocity (a rod moves with the sampled flow,
 so an error of the flow shows up one to one in its free velocity), plus the
 resolved flow's own mesh uncertainty at that point (the change of its gap
 average from the 1 um to the 0.75 um base mesh, the file's column du_mesh).
@@ -30,7 +30,7 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "data", "pore_passage_empty_channel_resolved.csv")
-BUDGET = 0.03  # relative, the free-velocity tolerance of issue 14
+BUDGET = 0.03  # relative, the tolerance on a free rod's velocity
 SPHERE_DIAMETER = 3e-6  # [m], the passage's rod
 WIDTH, PORE_X, PORE_R = 36e-6, 42e-6, 9e-6  # [m], calibration/validation/pore_passage/scene.json
 

@@ -1,5 +1,5 @@
 """hsrod's default level on the dynamic pore-passage scene against the
-recorded resolved run (issue 14 item 4; calibration/validation/pore_passage/).
+recorded resolved run (calibration/validation/pore_passage/).
 
 Runs calibration/validation/pore_passage/in.passage with model auto (the
 default; it chooses level 2 here, as printed) and compares the paper's
@@ -39,7 +39,7 @@ PASSAGE = os.path.join(ROOT, "calibration", "validation", "pore_passage")
 sys.path.insert(0, PASSAGE)
 import passage_measures as pm  # noqa: E402
 
-MESH_UNCERTAINTY = 0.03  # relative, rodIbFoam's rod driving (calibration/README.md, issue 14)
+MESH_UNCERTAINTY = 0.03  # relative, rodIbFoam's rod driving (calibration/README.md)
 
 
 def wobble(rows, col):

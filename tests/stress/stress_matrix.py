@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Stress and fuzz matrix for hsrod (issue 10, item 6).
+"""Stress and fuzz matrix for hsrod.
 
 Runs build/hsrod on generated input scripts of the pore scene and classifies
 each case:
@@ -177,7 +177,8 @@ def classify(hsrod, text, timeout):
 # difference estimates the case's own step error to within 1/REFINE (1/4).
 # Tolerance: 5 % of what the rod did (its displacement along and across the
 # channel, its turn) plus one sphere diameter / 2 degrees. That is below the
-# reduced model's own error against the resolved runs (3-10 %, issue 14), so
+# reduced model's own error against the resolved runs (3-10 %, see
+# calibration/validation/crosscheck.md), so
 # a large step costs no more accuracy than the model already lacks.
 REFINE, REFINE_COSTLY = 10, 4
 REFINE_SECOND = 4  # the second reference, when the first disagrees: dt/40 (dt/16)
@@ -330,10 +331,10 @@ def matrix(short):
             (4e-6, 0.85, 15e6, 10, "auto"), (4e-6, 0.95, 15e6, 10, "auto"),
             (2e-6, 0.15, 1.5e12, 10, "nonlocal"), (1e-5, 0.3, 15e3, 5, "isotropic"),
             (4e-6, 0.15, 15e6, 200, "auto"), (4e-6, 0.6, 15e9, 2, "local"),
-            # The matrix's first failure (session 10): level 4's kept
-            # resistance carried the fine lattice's sub-cell noise of each
-            # sphere's self term, which turned this 2-sphere rod ~3 deg more
-            # at dt/10 than at dt past the pore (-5.58 vs -2.87 deg).
+            # A guard for level 4's kept resistance: carrying the fine
+            # lattice's sub-cell noise of each sphere's self term, it turns
+            # this 2-sphere rod ~3 deg more at dt/10 than at dt past the
+            # pore (-5.58 vs -2.87 deg).
             (1e-4, 0.85, 15e3, 2, "twoway"),
         ]:
             cases.append((f"dt={dt} beta={beta} E={E} N={n} model={model}", scene(dt, beta, E, n, model, steps=20)))

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Body-fitted cross-check of rodIbFoam's immersed boundary (issue 14 item 1).
+"""Body-fitted cross-check of rodIbFoam's immersed boundary.
 
 The same case as a campaign channelBody case -- channel L x W x H, side
 walls y = 0 and y = W, plates z = 0 and H, flow-rate inlet at x = 0, outlet
@@ -55,49 +55,8 @@ END_TIME = {2: 800, 3: 800, 4: 400}
 FORCE_CHANGE_TOLERANCE = 1e-5
 ROWS_GAP = 1.5  # the rows' nearest surface gap to the wall [d] (plan_body_fitted_rows.json)
 
-
-def foam(path, obj, body, cls="dictionary"):
-    hsrod_case.foam_file(path, cls, obj, body)
-
-
-def ibm_series(gap, n=1, plan_path=PLAN, angle=None):
-    """The campaign's specs of the row of n spheres (a lone sphere by default)
-    near the wall at `gap` (row angle `angle`, any if None): {(load, n_d): spec}."""
-    plan = hsrod_campaign.load_plan(plan_path)
-    out = {}
-    for spec in hsrod_campaign.expand(plan):
-        g = spec.get("geometry", {})
-        if g.get("kind") == "wall" and spec["n"] == n and abs(g["gap"] - gap) < 1e-12 and (
-                angle is None or abs(g["row_angle_deg"] - angle) < 1e-9):
-            out[(spec["load"], spec["cells_per_diameter"])] = spec
-    return out
-
-
-def write_case(case, spec, level):
-    """Body-fitted case of campaign spec `spec` (geometry wall) with sphere surface level `level`."""
-    scene = hsrod_campaign.scene_of(spec)
-    spheres = hsrod_case.channel_body_spheres(scene)
-    d, U, beta = scene["d"], scene["U"], scene["beta"]
-    H = d / beta
-    L, W = scene["channel"]["L"], scene["channel"]["W"]
-    h0 = 2 * d / 6                                 # background cells, as the IBM's mesh 6 before refinement
-    nx, ny, nz = (int(round(v / h0)) for v in (L, W, H))
-    # blockMesh in micrometres
-    ax, ay, az = (hsrod_case.Axis.uniform(0, v / UM, k) for v, k in ((L, nx), (W, ny), (H, nz)))
-    hsrod_case.write_block_mesh(case, ax, ay, az, {"xmin": ("inlet", "patch"), "xmax": ("outlet", "patch"),
-                                                   "ymin": ("walls", "wall"), "ymax": ("walls", "wall"),
-                                                   "zmin": ("walls", "wall"), "zmax": ("walls", "wall")})
-    geo = "".join("    sphere%d { type searchableSphere; centre %s; radius %.12g; }\n"
-                  % (s["id"], hsrod_case.vec([c / UM for c in s["x"]]), 0.5 * s["d"] / UM) for s in spheres)
-    surf = "".join("        sphere%d { level (%d %d); patchInfo { type wall; inGroups (spheres); } }\n"
-                   % (s["id"], level, level) for s in spheres)
-    # refinement shells: distance from the surfaces (um) -> level
-    shells = "".join("        sphere%d { mode distance; levels ((%.6g %d) (%.6g %d) (%.6g %d)); }\n"
-                     % (s["id"], 0.25 * d / UM, level, 0.6 * d / UM, max(level - 1, 1), 1.4 * d / UM, max(level - 2, 1))
-                     for s in spheres)
-    # a fluid point away from the spheres and off the cell faces
-    loc = (0.137 * L / UM + 0.01 * h0 / UM, 0.813 * W / UM + 0.013 * h0 / UM, 0.5 * H / UM + 0.017 * h0 / UM)
-    foam(os.path.join(case, "system", "snappyHexMeshDict"), "snappyHexMeshDict", """
+# snappyHexMeshDict of write_snappy: % (geometry, refinementSurfaces, refinementRegions, locationInMesh)
+SNAPPY_HEX_MESH_DICT = """
 castellatedMesh true;
 snap true;
 addLayers false;
@@ -171,8 +130,73 @@ meshQualityControls
     relaxed { maxNonOrtho 75; }
 }
 mergeTolerance 1e-6;
-""" % (geo, surf, shells, hsrod_case.vec(loc)))
-    # fields (SI; the mesh is scaled to metres before the solver runs)
+"""
+
+
+def foam(path, obj, body, cls="dictionary"):
+    hsrod_case.foam_file(path, cls, obj, body)
+
+
+def ibm_series(gap, n=1, plan_path=PLAN, angle=None):
+    """The campaign's specs of the row of n spheres (a lone sphere by default)
+    near the wall at `gap` (row angle `angle`, any if None): {(load, n_d): spec}."""
+    plan = hsrod_campaign.load_plan(plan_path)
+    out = {}
+    for spec in hsrod_campaign.expand(plan):
+        g = spec.get("geometry", {})
+        if g.get("kind") == "wall" and spec["n"] == n and abs(g["gap"] - gap) < 1e-12 and (
+                angle is None or abs(g["row_angle_deg"] - angle) < 1e-9):
+            out[(spec["load"], spec["cells_per_diameter"])] = spec
+    return out
+
+
+def write_case(case, spec, level):
+    """Body-fitted case of campaign spec `spec` (geometry wall) with sphere surface level `level`."""
+    scene = hsrod_campaign.scene_of(spec)
+    spheres = hsrod_case.channel_body_spheres(scene)
+    d = scene["d"]
+    H = d / scene["beta"]
+    L, W = scene["channel"]["L"], scene["channel"]["W"]
+    h0 = 2 * d / 6                                 # background cells, as the IBM's mesh 6 before refinement
+    write_background_mesh(case, L, W, H, h0)
+    write_snappy(case, spheres, level, d, L, W, H, h0)
+    rho = write_fields(case, scene, W, H)
+    write_controls(case, spheres, rho, level)
+    return spheres, scene
+
+
+def write_background_mesh(case, L, W, H, h0):
+    """blockMesh of the channel in micrometres: uniform cells of about h0 [m]."""
+    nx, ny, nz = (int(round(v / h0)) for v in (L, W, H))
+    ax, ay, az = (hsrod_case.Axis.uniform(0, v / UM, k) for v, k in ((L, nx), (W, ny), (H, nz)))
+    hsrod_case.write_block_mesh(case, ax, ay, az, {"xmin": ("inlet", "patch"), "xmax": ("outlet", "patch"),
+                                                   "ymin": ("walls", "wall"), "ymax": ("walls", "wall"),
+                                                   "zmin": ("walls", "wall"), "zmax": ("walls", "wall")})
+
+
+def write_snappy(case, spheres, level, d, L, W, H, h0):
+    """snappyHexMeshDict (micrometres): the spheres cut out of the background
+    mesh, their surfaces refined to `level` inside three distance shells."""
+    geo = "".join("    sphere%d { type searchableSphere; centre %s; radius %.12g; }\n"
+                  % (s["id"], hsrod_case.vec([c / UM for c in s["x"]]), 0.5 * s["d"] / UM) for s in spheres)
+    surf = "".join("        sphere%d { level (%d %d); patchInfo { type wall; inGroups (spheres); } }\n"
+                   % (s["id"], level, level) for s in spheres)
+    # refinement shells: distance from the surfaces (um) -> level
+    shells = "".join("        sphere%d { mode distance; levels ((%.6g %d) (%.6g %d) (%.6g %d)); }\n"
+                     % (s["id"], 0.25 * d / UM, level, 0.6 * d / UM, max(level - 1, 1), 1.4 * d / UM, max(level - 2, 1))
+                     for s in spheres)
+    # a fluid point away from the spheres and off the cell faces
+    loc = (0.137 * L / UM + 0.01 * h0 / UM, 0.813 * W / UM + 0.013 * h0 / UM, 0.5 * H / UM + 0.017 * h0 / UM)
+    foam(os.path.join(case, "system", "snappyHexMeshDict"), "snappyHexMeshDict",
+         SNAPPY_HEX_MESH_DICT % (geo, surf, shells, hsrod_case.vec(loc)))
+
+
+def write_fields(case, scene, W, H):
+    """0/U, 0/p and the fluid's properties of the load (friction: the spheres
+    translate, no inflow; driving: held spheres, flow-rate inlet); returns the
+    density rho [kg/m^3] the forces are scaled with."""
+    U = scene["U"]
+    # SI; the mesh is scaled to metres before the solver runs
     nu = 1e-3                                      # m^2/s: Re = U d / nu = 3e-6 (Stokes); mu = rho nu
     rho = scene["fluid"]["mu"] / nu                # kg/m^3, so that mu = 1e-3 Pa s as in the campaign
     load = scene["load"]
@@ -192,6 +216,12 @@ mergeTolerance 1e-6;
     foam(os.path.join(case, "constant", "transportProperties"), "transportProperties",
          "transportModel Newtonian;\nnu %.12g;\n" % nu)
     foam(os.path.join(case, "constant", "turbulenceProperties"), "turbulenceProperties", "simulationType laminar;\n")
+    return rho
+
+
+def write_controls(case, spheres, rho, level):
+    """controlDict (simpleFoam, `forces` function objects of the spheres),
+    fvSchemes, fvSolution and decomposeParDict."""
     centre = [sum(s["x"][k] for s in spheres) / len(spheres) for k in range(3)]
     # the total on the sphere patches and, for a row, one forces object per sphere (patch sphere<id>)
     forces = forces_object("sphereForces", "spheres", rho, centre) + "".join(
@@ -237,7 +267,6 @@ relaxationFactors
 }
 """)
     foam(os.path.join(case, "system", "decomposeParDict"), "decomposeParDict", "numberOfSubdomains 1;\nmethod none;\n")
-    return spheres, scene
 
 
 def forces_object(name, patches, rho, cofr):

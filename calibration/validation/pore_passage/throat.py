@@ -151,6 +151,22 @@ def main(argv=None):
     keys = list(traj)
     meshes = sorted({m for (_, m) in res if isinstance(m, int)})
     variants = sorted({m for (_, m) in res if not isinstance(m, int)})
+    sources = load_sources(res, lev, keys, meshes, variants)
+    write_per_sphere(res, sources, keys, traj, binary, lev_args)
+    rig = {ks: rigid(c) for ks, c in sources.items()}
+    write_rigid(rig, traj)
+    md = (per_sphere_tables(sources, keys, traj, meshes) + rigid_table(rig, keys, traj)
+          + lateral_velocity_table(rig, keys, traj) + displacement_table(rig, keys, traj)
+          + cost_table(res, keys, traj, meshes, variants))
+    with open(os.path.join(HERE, "throat_tables.md"), "w") as f:
+        f.write("\n".join(md) + "\n")
+    print("\n".join(md))
+    return 0
+
+
+def load_sources(res, lev, keys, meshes, variants):
+    """{(config, source): {load: ...}}: per configuration the resolved cases
+    with all four loads on each mesh and variant, then levels 1-4."""
     sources = {}
     for k in keys:
         for m in meshes:
@@ -161,8 +177,11 @@ def main(argv=None):
                 sources[(k, "resolved m%s" % m)] = res[(k, m)]
         for lv in LEVELS:
             sources[(k, LEVEL_NAME[lv])] = lev[(k, lv)]
+    return sources
 
-    # ---- per-sphere CSV
+
+def write_per_sphere(res, sources, keys, traj, binary, lev_args):
+    """throat_per_sphere.csv: every source's per-sphere loads, provenance in the header."""
     commits = sorted({e["commit"] for c in res.values() for e in c.values()})
     shas = sorted({e["solver_sha256"] for c in res.values() for e in c.values()})
     with open(os.path.join(HERE, "throat_per_sphere.csv"), "w") as f:
@@ -191,8 +210,9 @@ def main(argv=None):
                             k, s["paper_angle_deg"], src, ld, i + 1, e["pos"][i, 0], e["pos"][i, 1],
                             e["F"][i, 0], e["F"][i, 1], e["T"][i], e.get("cells", ""), e.get("cpu", "")))
 
-    # ---- rigid reduction
-    rig = {ks: rigid(c) for ks, c in sources.items()}
+
+def write_rigid(rig, traj):
+    """throat_rigid.csv: the rigid reduction of every source, with the trajectory's own rates."""
     with open(os.path.join(HERE, "throat_rigid.csv"), "w") as f:
         f.write("# rigid reduction of throat_per_sphere.csv (throat.py): R (resistance, units 3 pi mu d^k), "
                 "D (held load: Fx, Fy over 3 pi mu d U, Tz over 3 pi mu d^2 U), free motion q = R^-1 D "
@@ -205,7 +225,9 @@ def main(argv=None):
                                                     ",".join("%.6g" % v for v in q), ",".join("%.6g" % v for v in lk),
                                                     ",".join("%.5g" % v for v in traj[k][1])))
 
-    # ---- tables
+
+def per_sphere_tables(sources, keys, traj, meshes):
+    """Per-sphere loads held, dragged across and along, resolved (finest mesh) against the levels."""
     md = []
     def finest(k):
         return max((m for m in meshes if (k, "resolved m%d" % m) in sources), default=None)
@@ -243,6 +265,12 @@ def main(argv=None):
                     for c in (0, 1):
                         cells.append("%+.3f (%+.0f)" % (m[i, c], pct(m[i, c], r[i, c], scale)))
                 md.append("| " + " | ".join(cells) + " |")
+    return md
+
+
+def rigid_table(rig, keys, traj):
+    """Held load, resistance and free motion of the rigid rod per configuration and source."""
+    md = []
     md.append("\nRigid rod (same reduction on both sides): held load D = (F_x, F_y, T_z) on the rod, resistance "
               "diagonal R_xx, R_yy, R_tt and coupling R_yt, R_xy; free motion (force- and torque-free) V_x/U, "
               "V_y/U, Ω d/U; V_y/U with the rotation locked; the resolved trajectory's own rates where "
@@ -260,7 +288,13 @@ def main(argv=None):
                 D[0], D[1], D[2], R[0, 0], R[1, 1], R[2, 2], R[0, 1], R[1, 2], q[0], q[1], q[2], lk[1]))
             first = False
         md.append("| | resolved trajectory | | | | | | | | | %+.4f | %+.4f | %+.4f | |" % tuple(tr))
-    # decomposition of the free lateral velocity: V_y = (D_y - R_yx V_x - R_yt Omega) / R_yy
+    return md
+
+
+def lateral_velocity_table(rig, keys, traj):
+    """The free lateral velocity V_y = (D_y - R_yx V_x - R_yt Omega) / R_yy split into
+    the push of the held load, the x-y coupling at the free V_x and the rotation term."""
+    md = []
     md.append("\nWhat the free lateral velocity is made of, V_y = (D_y - R_yx V_x - R_yt Ω) / R_yy (velocities "
               "over U): the held lateral load D_y / R_yy (\"push\"), the x-y coupling of the resistance at the "
               "free V_x, -R_yx V_x / R_yy, and the rotation term; the levels' error of V_y split into the two:\n")
@@ -276,10 +310,15 @@ def main(argv=None):
                 ("%.1f, %.1f°" % (s["centre"][0] * 1e6, s["paper_angle_deg"])) if first else "", src,
                 D[1] / R[1, 1], -R[1, 0] * q[0] / R[1, 1], -R[1, 2] * q[2] / R[1, 1], q[1]))
             first = False
+    return md
+
+
+def displacement_table(rig, keys, traj):
+    """Lateral displacement across the throat, free rigid rod against the trajectory."""
+    md = []
     # lateral displacement across the throat from the quasi-steady free motion (trapezoid of V_y / V_x over
     # the configurations' x; angles and lateral positions held at the trajectory's)
     xs = [traj[k][0]["centre"][0] * 1e6 for k in keys]
-    ys = [traj[k][0]["centre"][1] * 1e6 for k in keys]
     W = 36.0
     md.append("\nLateral displacement / W from x = %.1f to %.1f µm: integral of V_y / V_x of the free rigid rod "
               "along x (trapezoid over the configurations; the angle and y of the trajectory), against the "
@@ -297,7 +336,12 @@ def main(argv=None):
     keep = [i for i in range(len(cx)) if i == 0 or cx[i] > max(cx[:i])]  # monotone in x
     y_at = lambda x: float(np.interp(x, [cx[i] for i in keep], [cy[i] for i in keep]))
     md.append("| resolved trajectory (resolved.csv) | %+.4f |" % ((y_at(xs[-1]) - y_at(xs[0])) / W))
-    # cost
+    return md
+
+
+def cost_table(res, keys, traj, meshes, variants):
+    """Cells, iterations and CPU time of every resolved case."""
+    md = []
     md.append("\nrodIbFoam cases (one core, `nice -n 10`, shared machine):\n")
     md.append("| config | mesh | load | cells | iterations | CPU [s] | wall [s] |")
     md.append("| --- | ---: | --- | ---: | ---: | ---: | ---: |")
@@ -313,10 +357,8 @@ def main(argv=None):
                         s["centre"][0] * 1e6, s["paper_angle_deg"], m, ld, e["cells"], e["iterations"], e["cpu"],
                         e["wall"]))
     md.append("\n%d cases, %.0f s CPU in all." % (sum(len(c) for c in res.values()), total))
-    with open(os.path.join(HERE, "throat_tables.md"), "w") as f:
-        f.write("\n".join(md) + "\n")
-    print("\n".join(md))
-    return 0
+    return md
+
 
 
 if __name__ == "__main__":

@@ -40,6 +40,14 @@ using namespace LAMMPS_NS;
 CreateRod::CreateRod(LAMMPS *instance) : Pointers(instance) {}
 
 namespace {
+// What the command line asks for.
+struct RodRequest {
+  hsrod::RodSpec spec;
+  int type = 0, mol = 0, bond_type = 1;  // mol 0: the next free molecule ID
+  double density = -1.0, offset = 0.0, angle_deg = 0.0;
+  bool have_spacing = false;  // spacing given (it must then be >= d)
+};
+
 // Spheres of one rod may touch, never overlap: an overlapping chain has
 // bonds shorter than their own section (and no calibrated drag), and was
 // refused only later by the step's bond-strain guard. spacing 0 does not
@@ -52,20 +60,11 @@ void check_spacing(Error *error, const hsrod::RodSpec &spec) {
                 "overlap; omit spacing for touching spheres)", spec.spacing, spec.sphere_diameter);
   error->all(FLERR, msg);
 }
-}  // namespace
 
-void CreateRod::command(int narg, char **arg) {
-  if (domain->box_exist == 0) error->all(FLERR, "create_rod command before simulation box is defined");
-  if (!atom->molecular || !atom->molecule_flag || !atom->radius_flag || !atom->rmass_flag)
-    error->all(FLERR, "create_rod requires an atom style with spheres, bonds and molecule IDs "
-                      "(atom_style hybrid granular molecular)");
-
-  hsrod::RodSpec spec;
-  int type = 0, mol = 0, bond_type = 1;
-  double density = -1.0, offset = 0.0, angle_deg = 0.0;
+RodRequest parse_request(Error *error, int narg, char **arg) {
+  RodRequest r;
+  hsrod::RodSpec &spec = r.spec;
   bool have[5] = {false, false, false, false, false};  // spheres diameter type density centre
-  bool have_spacing = false;  // spacing given (it must then be >= d)
-
   for (int iarg = 0; iarg < narg;) {
     const char *key = arg[iarg];
     auto need = [&](int n) {
@@ -87,12 +86,12 @@ void CreateRod::command(int narg, char **arg) {
       iarg += 2;
     } else if (strcmp(key, "type") == 0) {
       need(1);
-      type = parse_integer(error, "create_rod", key, arg[iarg + 1]);
+      r.type = parse_integer(error, "create_rod", key, arg[iarg + 1]);
       have[2] = true;
       iarg += 2;
     } else if (strcmp(key, "density") == 0) {
       need(1);
-      density = parse_number(error, "create_rod", key, arg[iarg + 1]);
+      r.density = parse_number(error, "create_rod", key, arg[iarg + 1]);
       have[3] = true;
       iarg += 2;
     } else if (strcmp(key, "centre") == 0 || strcmp(key, "center") == 0) {
@@ -102,16 +101,16 @@ void CreateRod::command(int narg, char **arg) {
       iarg += 4;
     } else if (strcmp(key, "angle") == 0) {
       need(1);
-      angle_deg = parse_number(error, "create_rod", key, arg[iarg + 1]);
+      r.angle_deg = parse_number(error, "create_rod", key, arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(key, "offset") == 0) {
       need(1);
-      offset = parse_number(error, "create_rod", key, arg[iarg + 1]);
+      r.offset = parse_number(error, "create_rod", key, arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(key, "spacing") == 0) {
       need(1);
       spec.spacing = parse_number(error, "create_rod", key, arg[iarg + 1]);
-      have_spacing = true;
+      r.have_spacing = true;
       iarg += 2;
     } else if (strcmp(key, "section") == 0) {
       need(1);
@@ -125,13 +124,13 @@ void CreateRod::command(int narg, char **arg) {
       iarg += 2;
     } else if (strcmp(key, "mol") == 0) {
       need(1);
-      mol = parse_integer(error, "create_rod", key, arg[iarg + 1]);
-      if (mol <= 0) error->all(FLERR, "create_rod: mol must be a positive molecule ID");
+      r.mol = parse_integer(error, "create_rod", key, arg[iarg + 1]);
+      if (r.mol <= 0) error->all(FLERR, "create_rod: mol must be a positive molecule ID");
       iarg += 2;
     } else if (strcmp(key, "bond_type") == 0) {
       need(1);
-      bond_type = parse_integer(error, "create_rod", key, arg[iarg + 1]);
-      if (bond_type <= 0) error->all(FLERR, "create_rod: bond_type must be >= 1");
+      r.bond_type = parse_integer(error, "create_rod", key, arg[iarg + 1]);
+      if (r.bond_type <= 0) error->all(FLERR, "create_rod: bond_type must be >= 1");
       iarg += 2;
     } else {
       char msg[256];
@@ -149,26 +148,35 @@ void CreateRod::command(int narg, char **arg) {
       error->all(FLERR, msg);
     }
   }
+  return r;
+}
+
+// The values' ranges, once every keyword is read (ntypes: the box's atom types).
+void check_request(Error *error, const RodRequest &r, int ntypes) {
+  const hsrod::RodSpec &spec = r.spec;
   if (spec.number_of_sections < 2) {
     char msg[128];
     std::snprintf(msg, sizeof(msg), "create_rod: spheres must be >= 2 (got %d)", spec.number_of_sections);
     error->all(FLERR, msg);
   }
   if (!(spec.sphere_diameter > 0.0)) error->all(FLERR, "create_rod: diameter must be > 0 m");
-  if (!(density > 0.0)) error->all(FLERR, "create_rod: density must be > 0 kg/m3");
-  if (type < 1 || type > atom->ntypes) {
+  if (!(r.density > 0.0)) error->all(FLERR, "create_rod: density must be > 0 kg/m3");
+  if (r.type < 1 || r.type > ntypes) {
     char msg[128];
-    std::snprintf(msg, sizeof(msg), "create_rod: type %d out of range 1..%d", type, atom->ntypes);
+    std::snprintf(msg, sizeof(msg), "create_rod: type %d out of range 1..%d", r.type, ntypes);
     error->all(FLERR, msg);
   }
-  if (have_spacing) check_spacing(error, spec);
+  if (r.have_spacing) check_spacing(error, spec);
+}
 
+// The rod's spheres and bonds (rod/rod_layout.h); every sphere must lie inside
+// the box (periodic directions wrap). Sets the spec's angle and centre.
+hsrod::RodLayout build_layout(Domain *domain, Error *error, RodRequest &r) {
+  hsrod::RodSpec &spec = r.spec;
   const double pi = hsrod::kPi;
-  spec.angle = angle_deg * pi / 180.0;
-  spec.centre.y() += offset;
+  spec.angle = r.angle_deg * pi / 180.0;
+  spec.centre.y() += r.offset;
   const hsrod::RodLayout layout = hsrod::make_rod_layout(spec);
-
-  // Every sphere must lie inside the box (periodic directions wrap).
   for (const auto &s : layout.spheres) {
     for (int a = 0; a < 3; a++) {
       if (domain->periodicity[a]) continue;
@@ -183,8 +191,12 @@ void CreateRod::command(int narg, char **arg) {
       }
     }
   }
+  return layout;
+}
 
-  // Bonds stored per sphere: once (on the lower ID) with newton_bond, on both otherwise.
+// Bond slots per atom for this rod: its bonds are stored once (on the lower
+// ID) with newton_bond, on both spheres otherwise.
+void reserve_bonds(Atom *atom, Force *force, Error *error, const hsrod::RodLayout &layout, int bond_type) {
   std::vector<int> stored(layout.spheres.size(), 0);
   for (const auto &b : layout.bonds) {
     stored[b.first]++;
@@ -200,19 +212,13 @@ void CreateRod::command(int narg, char **arg) {
     atom->avec->grow(atom->nmax);
   }
   if (atom->nbondtypes < bond_type) atom->nbondtypes = bond_type;
+}
 
-  // New IDs continue after the largest existing ones.
-  int local_max[2] = {0, 0};
-  for (int i = 0; i < atom->nlocal; i++) {
-    local_max[0] = std::max(local_max[0], atom->tag[i]);
-    local_max[1] = std::max(local_max[1], atom->molecule[i]);
-  }
-  int global_max[2];
-  MPI_Allreduce(local_max, global_max, 2, MPI_INT, MPI_MAX, world);
-  const int first_tag = global_max[0] + 1;
-  if (mol == 0) mol = global_max[1] + 1;
-
-  const int nlocal_before = atom->nlocal;
+// Creates the spheres inside this processor's subdomain, IDs from first_tag
+// on; returns each sphere's local index (-1: created by another processor).
+std::vector<int> create_spheres(Atom *atom, Domain *domain, const RodRequest &r, const hsrod::RodLayout &layout,
+                                int first_tag, int mol) {
+  const double pi = hsrod::kPi;
   std::vector<int> local_index(layout.spheres.size(), -1);
   for (size_t s = 0; s < layout.spheres.size(); s++) {
     double xone[3] = {layout.spheres[s].position[0], layout.spheres[s].position[1], layout.spheres[s].position[2]};
@@ -222,22 +228,23 @@ void CreateRod::command(int narg, char **arg) {
     for (int a = 0; a < 3; a++)
       if (xone[a] < domain->sublo[a] || xone[a] >= domain->subhi[a]) mine = false;
     if (!mine) continue;
-    atom->avec->create_atom(type, xone);
+    atom->avec->create_atom(r.type, xone);
     const int i = atom->nlocal - 1;
     atom->image[i] = image;
     atom->tag[i] = first_tag + static_cast<int>(s);
     atom->molecule[i] = mol;
-    atom->radius[i] = 0.5 * spec.sphere_diameter;
-    if (atom->density_flag) atom->density[i] = density;
-    atom->rmass[i] = density * pi * std::pow(spec.sphere_diameter, 3) / 6.0;
+    atom->radius[i] = 0.5 * r.spec.sphere_diameter;
+    if (atom->density_flag) atom->density[i] = r.density;
+    atom->rmass[i] = r.density * pi * std::pow(r.spec.sphere_diameter, 3) / 6.0;
     atom->num_bond[i] = 0;
     local_index[s] = i;
   }
-  int created_here = atom->nlocal - nlocal_before, created = 0;
-  MPI_Allreduce(&created_here, &created, 1, MPI_INT, MPI_SUM, world);
-  if (created != static_cast<int>(layout.spheres.size()))
-    error->all(FLERR, "create_rod: some spheres were not created (outside every processor's subdomain)");
+  return local_index;
+}
 
+// The rod's bonds on the spheres this processor created.
+void add_bonds(Atom *atom, Force *force, const hsrod::RodLayout &layout, const std::vector<int> &local_index,
+               int first_tag, int bond_type) {
   auto add_bond = [&](int s, int partner) {
     const int i = local_index[s];
     if (i < 0) return;
@@ -249,6 +256,39 @@ void CreateRod::command(int narg, char **arg) {
     add_bond(b.first, b.second);
     if (!force->newton_bond) add_bond(b.second, b.first);
   }
+}
+}  // namespace
+
+void CreateRod::command(int narg, char **arg) {
+  if (domain->box_exist == 0) error->all(FLERR, "create_rod command before simulation box is defined");
+  if (!atom->molecular || !atom->molecule_flag || !atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR, "create_rod requires an atom style with spheres, bonds and molecule IDs "
+                      "(atom_style hybrid granular molecular)");
+
+  RodRequest request = parse_request(error, narg, arg);
+  check_request(error, request, atom->ntypes);
+  const hsrod::RodSpec &spec = request.spec;
+  const hsrod::RodLayout layout = build_layout(domain, error, request);
+  reserve_bonds(atom, force, error, layout, request.bond_type);
+
+  // New IDs continue after the largest existing ones.
+  int local_max[2] = {0, 0};
+  for (int i = 0; i < atom->nlocal; i++) {
+    local_max[0] = std::max(local_max[0], atom->tag[i]);
+    local_max[1] = std::max(local_max[1], atom->molecule[i]);
+  }
+  int global_max[2];
+  MPI_Allreduce(local_max, global_max, 2, MPI_INT, MPI_MAX, world);
+  const int first_tag = global_max[0] + 1;
+  const int mol = request.mol == 0 ? global_max[1] + 1 : request.mol;
+
+  const int nlocal_before = atom->nlocal;
+  const std::vector<int> local_index = create_spheres(atom, domain, request, layout, first_tag, mol);
+  int created_here = atom->nlocal - nlocal_before, created = 0;
+  MPI_Allreduce(&created_here, &created, 1, MPI_INT, MPI_SUM, world);
+  if (created != static_cast<int>(layout.spheres.size()))
+    error->all(FLERR, "create_rod: some spheres were not created (outside every processor's subdomain)");
+  add_bonds(atom, force, layout, local_index, first_tag, request.bond_type);
 
   // Fixes with per-atom state initialise the new atoms.
   for (int f = 0; f < modify->nfix; f++)
@@ -270,7 +310,7 @@ void CreateRod::command(int narg, char **arg) {
     std::snprintf(msg, sizeof(msg),
                   "create_rod: rod mol %d: %d spheres (section %dx%d) of d = %g m, %d bonds, angle %g deg, "
                   "IDs %d..%d\n", mol, created, spec.section_rows, spec.section_layers, spec.sphere_diameter,
-                  static_cast<int>(layout.bonds.size()), angle_deg, first_tag, first_tag + created - 1);
+                  static_cast<int>(layout.bonds.size()), request.angle_deg, first_tag, first_tag + created - 1);
     if (screen) fputs(msg, screen);
     if (logfile) fputs(msg, logfile);
   }

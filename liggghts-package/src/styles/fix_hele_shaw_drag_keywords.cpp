@@ -57,7 +57,162 @@ double viscosity_in_range(LAMMPS_NS::Error *error, double viscosity) {
   }
   return viscosity;
 }
+
+// One keyword at arg[iarg] and its values, read with the fix's checks.
+struct Keyword {
+  Error *error;
+  int narg;
+  char **arg;
+  int iarg;
+
+  bool is(const char *name) const { return strcmp(arg[iarg], name) == 0; }
+  void need(int n) const {
+    if (iarg + n >= narg) {
+      char msg[256];
+      std::snprintf(msg, sizeof(msg), "Illegal fix hele_shaw/drag command: keyword %s needs %d value(s)", arg[iarg], n);
+      error->all(FLERR, msg);
+    }
+  }
+  double number(int k) const { return parse_number(error, kStyle, arg[iarg], arg[iarg + k]); }
+  double positive(const char *key, double value, const char *unit) const {
+    if (!(value > 0.0)) {
+      char msg[128];
+      std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s must be > 0%s", key, unit);
+      error->all(FLERR, msg);
+    }
+    return value;
+  }
+};
+
+// Each group below reads its own keywords and returns how many values the
+// keyword took, or 0 for a keyword of another group.
+
+// The channel, its obstacles, the fluid and the inflow.
+int scene_keyword(const Keyword &k, hsrod::SceneSpec &scene, bool &have_inflow) {
+  const char *key = k.arg[k.iarg];
+  int values = 1;
+  if (k.is("channel")) {
+    k.need(values = 3);
+    scene.length = k.number(1);
+    scene.width = k.number(2);
+    scene.gap_height = k.number(3);
+  } else if (k.is("origin")) {
+    k.need(values = 3);
+    scene.origin = Eigen::Vector3d(k.number(1), k.number(2), k.number(3));
+  } else if (k.is("pore")) {
+    k.need(values = 2);
+    scene.pore_radius = k.positive("pore radius R", k.number(1), " m (and < W/2)");
+    scene.pore_x = k.number(2);
+  } else if (k.is("cylinder")) {
+    k.need(values = 3);
+    scene.cylinders.push_back({k.number(1), k.number(2), k.number(3)});
+  } else if (k.is("viscosity")) {
+    k.need(1);
+    scene.fluid.dynamic_viscosity = viscosity_in_range(k.error, k.number(1));
+  } else if (k.is("fluid_density")) {
+    k.need(1);
+    scene.fluid.density = k.positive(key, k.number(1), " kg/m3");
+  } else if (k.is("mean_velocity") || k.is("flow_rate") || k.is("reynolds")) {
+    k.need(1);
+    if (have_inflow) k.error->all(FLERR, "fix hele_shaw/drag: give only one of mean_velocity, flow_rate, reynolds");
+    have_inflow = true;
+    using Kind = hsrod::SceneSpec::InflowKind;
+    scene.inflow_kind = strcmp(key, "mean_velocity") == 0 ? Kind::mean_velocity
+                        : strcmp(key, "flow_rate") == 0   ? Kind::flow_rate
+                                                          : Kind::reynolds;
+    scene.inflow_value = k.positive(key, k.number(1), "");
+  } else if (k.is("inertia")) {
+    k.need(1);
+    scene.inertia = parse_yes_no(k.error, kStyle, key, k.arg[k.iarg + 1]);
+  } else {
+    values = 0;
+  }
+  return values;
 }
+
+// The model, its table and its resources.
+int model_keyword(const Keyword &k, hsrod::ModelSpec &model) {
+  const char *key = k.arg[k.iarg];
+  if (k.is("model")) {
+    k.need(1);
+    model.name = k.arg[k.iarg + 1];
+    if (model.name != "auto" && !hsrod::find_model(model.name)) {
+      char msg[256];
+      std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: unknown model '%s' (expected %s)", model.name.c_str(),
+                    hsrod::valid_model_names("auto").c_str());
+      k.error->all(FLERR, msg);
+    }
+  } else if (k.is("tolerance")) {
+    k.need(1);
+    model.tolerance = k.number(1);
+    if (!(model.tolerance > 0.0 && model.tolerance < 1.0))
+      k.error->all(FLERR, "fix hele_shaw/drag: tolerance must be in (0, 1)");
+  } else if (k.is("coefficients")) {
+    k.need(1);
+    model.coefficients_file = k.arg[k.iarg + 1];
+  } else if (k.is("section")) {
+    k.need(1);
+    model.spheres_per_section = parse_integer(k.error, kStyle, key, k.arg[k.iarg + 1]);
+    if (model.spheres_per_section < 1) k.error->all(FLERR, "fix hele_shaw/drag: section must be >= 1");
+  } else if (k.is("memory_limit")) {
+    k.need(1);
+    model.limits.dense_memory_bytes = k.positive(key, k.number(1), " bytes");
+  } else {
+    return 0;
+  }
+  return 1;
+}
+
+// Level 4's (twoway) flow window.
+int window_keyword(const Keyword &k, hsrod::TwoWayWindowOptions &window) {
+  const char *key = k.arg[k.iarg];
+  if (k.is("window_cells")) {
+    k.need(1);
+    window.cells_per_diameter = k.number(1);
+    const double cells = window.cells_per_diameter;
+    if (!(cells >= 2.0 && cells <= 16.0))
+      k.error->all(FLERR, "fix hele_shaw/drag: window_cells must be in [2, 16] cells per sphere diameter");
+  } else if (k.is("window_reflection_cells")) {
+    k.need(1);
+    window.reflection_cells_per_diameter = k.number(1);
+    const double cells = window.reflection_cells_per_diameter;
+    if (!(cells >= 1.0 && cells <= 16.0))
+      k.error->all(FLERR, "fix hele_shaw/drag: window_reflection_cells must be in [1, window_cells] cells per sphere diameter");
+  } else if (k.is("window_margin")) {
+    k.need(1);
+    window.margin = k.positive(key, k.number(1), " m");
+  } else if (k.is("window_fine")) {
+    k.need(1);
+    window.fine_margin = k.positive(key, k.number(1), " m");
+  } else if (k.is("window_grading")) {
+    k.need(1);
+    window.grading = k.number(1);
+    const double ratio = window.grading;
+    if (!(ratio > 1.0 && ratio <= 2.0))
+      k.error->all(FLERR, "fix hele_shaw/drag: window_grading must be in (1, 2] (cell growth ratio)");
+  } else if (k.is("window_update")) {
+    k.need(1);
+    window.update_distance = k.positive(key, k.number(1), " m");
+  } else if (k.is("window_every")) {
+    k.need(1);
+    window.update_every = parse_integer(k.error, kStyle, key, k.arg[k.iarg + 1]);
+    if (window.update_every < 0)
+      k.error->all(FLERR, "fix hele_shaw/drag: window_every must be >= 0 steps");
+  } else {
+    return 0;
+  }
+  return 1;
+}
+
+// The fix's own checks: yes|no.
+int check_keyword(const Keyword &k, bool &timestep_check, bool &placement_check) {
+  bool *flag = k.is("timestep_check") ? &timestep_check : k.is("placement_check") ? &placement_check : nullptr;
+  if (!flag) return 0;
+  k.need(1);
+  *flag = parse_yes_no(k.error, kStyle, k.arg[k.iarg], k.arg[k.iarg + 1]);
+  return 1;
+}
+}  // namespace
 
 void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &scene, hsrod::ModelSpec &model) {
   scene.length = domain->boxhi[0] - domain->boxlo[0];
@@ -68,128 +223,20 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
   scene.fluid.density = 1000.0;
   bool have_inflow = false;
 
-  int iarg = 3;
-  auto need = [&](int n) {
-    if (iarg + n >= narg) {
-      char msg[256];
-      std::snprintf(msg, sizeof(msg), "Illegal fix hele_shaw/drag command: keyword %s needs %d value(s)", arg[iarg], n);
-      error->all(FLERR, msg);
-    }
-  };
-  auto number = [&](int k) { return parse_number(error, kStyle, arg[iarg], arg[iarg + k]); };
-  auto positive = [&](const char *key, double value, const char *unit) {
-    if (!(value > 0.0)) {
-      char msg[128];
-      std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: %s must be > 0%s", key, unit);
-      error->all(FLERR, msg);
-    }
-    return value;
-  };
-  while (iarg < narg) {
-    const char *key = arg[iarg];
-    int values = 1;
-    if (strcmp(key, "channel") == 0) {
-      need(values = 3);
-      scene.length = number(1);
-      scene.width = number(2);
-      scene.gap_height = number(3);
-    } else if (strcmp(key, "origin") == 0) {
-      need(values = 3);
-      scene.origin = Eigen::Vector3d(number(1), number(2), number(3));
-    } else if (strcmp(key, "pore") == 0) {
-      need(values = 2);
-      scene.pore_radius = positive("pore radius R", number(1), " m (and < W/2)");
-      scene.pore_x = number(2);
-    } else if (strcmp(key, "cylinder") == 0) {
-      need(values = 3);
-      scene.cylinders.push_back({number(1), number(2), number(3)});
-    } else if (strcmp(key, "viscosity") == 0) {
-      need(1);
-      scene.fluid.dynamic_viscosity = viscosity_in_range(error, number(1));
-    } else if (strcmp(key, "fluid_density") == 0) {
-      need(1);
-      scene.fluid.density = positive(key, number(1), " kg/m3");
-    } else if (strcmp(key, "mean_velocity") == 0 || strcmp(key, "flow_rate") == 0 || strcmp(key, "reynolds") == 0) {
-      need(1);
-      if (have_inflow) error->all(FLERR, "fix hele_shaw/drag: give only one of mean_velocity, flow_rate, reynolds");
-      have_inflow = true;
-      using Kind = hsrod::SceneSpec::InflowKind;
-      scene.inflow_kind = strcmp(key, "mean_velocity") == 0 ? Kind::mean_velocity
-                          : strcmp(key, "flow_rate") == 0   ? Kind::flow_rate
-                                                            : Kind::reynolds;
-      scene.inflow_value = positive(key, number(1), "");
-    } else if (strcmp(key, "model") == 0) {
-      need(1);
-      model.name = arg[iarg + 1];
-      if (model.name != "auto" && !hsrod::find_model(model.name)) {
-        char msg[256];
-        std::snprintf(msg, sizeof(msg), "fix hele_shaw/drag: unknown model '%s' (expected %s)", model.name.c_str(),
-                      hsrod::valid_model_names("auto").c_str());
-        error->all(FLERR, msg);
-      }
-    } else if (strcmp(key, "window_cells") == 0) {
-      need(1);
-      model.options.window.cells_per_diameter = number(1);
-      const double cells = model.options.window.cells_per_diameter;
-      if (!(cells >= 2.0 && cells <= 16.0))
-        error->all(FLERR, "fix hele_shaw/drag: window_cells must be in [2, 16] cells per sphere diameter");
-    } else if (strcmp(key, "window_reflection_cells") == 0) {
-      need(1);
-      model.options.window.reflection_cells_per_diameter = number(1);
-      const double cells = model.options.window.reflection_cells_per_diameter;
-      if (!(cells >= 1.0 && cells <= 16.0))
-        error->all(FLERR, "fix hele_shaw/drag: window_reflection_cells must be in [1, window_cells] cells per sphere diameter");
-    } else if (strcmp(key, "window_margin") == 0) {
-      need(1);
-      model.options.window.margin = positive(key, number(1), " m");
-    } else if (strcmp(key, "window_fine") == 0) {
-      need(1);
-      model.options.window.fine_margin = positive(key, number(1), " m");
-    } else if (strcmp(key, "window_grading") == 0) {
-      need(1);
-      model.options.window.grading = number(1);
-      const double ratio = model.options.window.grading;
-      if (!(ratio > 1.0 && ratio <= 2.0))
-        error->all(FLERR, "fix hele_shaw/drag: window_grading must be in (1, 2] (cell growth ratio)");
-    } else if (strcmp(key, "window_update") == 0) {
-      need(1);
-      model.options.window.update_distance = positive(key, number(1), " m");
-    } else if (strcmp(key, "window_every") == 0) {
-      need(1);
-      model.options.window.update_every = parse_integer(error, kStyle, key, arg[iarg + 1]);
-      if (model.options.window.update_every < 0)
-        error->all(FLERR, "fix hele_shaw/drag: window_every must be >= 0 steps");
-    } else if (strcmp(key, "tolerance") == 0) {
-      need(1);
-      model.tolerance = number(1);
-      if (!(model.tolerance > 0.0 && model.tolerance < 1.0))
-        error->all(FLERR, "fix hele_shaw/drag: tolerance must be in (0, 1)");
-    } else if (strcmp(key, "coefficients") == 0) {
-      need(1);
-      model.coefficients_file = arg[iarg + 1];
-    } else if (strcmp(key, "section") == 0) {
-      need(1);
-      model.spheres_per_section = parse_integer(error, kStyle, key, arg[iarg + 1]);
-      if (model.spheres_per_section < 1) error->all(FLERR, "fix hele_shaw/drag: section must be >= 1");
-    } else if (strcmp(key, "inertia") == 0) {
-      need(1);
-      scene.inertia = parse_yes_no(error, kStyle, key, arg[iarg + 1]);
-    } else if (strcmp(key, "timestep_check") == 0) {
-      need(1);
-      timestep_check_ = parse_yes_no(error, kStyle, key, arg[iarg + 1]);
-    } else if (strcmp(key, "placement_check") == 0) {
-      need(1);
-      placement_check_ = parse_yes_no(error, kStyle, key, arg[iarg + 1]);
-    } else if (strcmp(key, "memory_limit") == 0) {
-      need(1);
-      model.limits.dense_memory_bytes = positive(key, number(1), " bytes");
-    } else {
+  for (int iarg = 3; iarg < narg;) {
+    const Keyword k{error, narg, arg, iarg};
+    int values = scene_keyword(k, scene, have_inflow);
+    if (values == 0) values = model_keyword(k, model);
+    if (values == 0) values = window_keyword(k, model.options.window);
+    if (values == 0) values = check_keyword(k, timestep_check_, placement_check_);
+    if (values == 0) {
       char msg[512];
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix hele_shaw/drag command: unknown keyword '%s' (expected channel, origin, pore, "
                     "cylinder, viscosity, fluid_density, mean_velocity, flow_rate, reynolds, model, tolerance, "
                     "coefficients, section, inertia, timestep_check, placement_check, memory_limit, window_cells, "
-                    "window_reflection_cells, window_margin, window_fine, window_grading, window_update, window_every)", key);
+                    "window_reflection_cells, window_margin, window_fine, window_grading, window_update, window_every)",
+                    arg[iarg]);
       error->all(FLERR, msg);
     }
     iarg += 1 + values;

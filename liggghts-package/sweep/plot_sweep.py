@@ -7,17 +7,28 @@
       paper's Figs. 10-11); failed cases drawn as black crosses.
   plot_sweep.py measure SWEEP.csv --x E --y angle [--group ratio] [--logx] -o angle.png
       any measure against any swept variable, one line per value of --group.
+  plot_sweep.py probability SWEEP.csv --x conc --y ratio [--class outcome] [--value 3]
+                            [--table cells.csv] -o p.png
+      a regime map of a probability: the cases of each (x, y) cell (every
+      value of the other swept variables, e.g. a seed axis) that end in
+      class --value (default 3, clogged), as a colour with the fraction and
+      its 95 % Wilson interval written in the cell (sweep_aggregate.py);
+      --table writes the cells as CSV.
   --where NAME=VALUE (repeatable) keeps only the cases with that value of a
   further swept variable.
 """
 import argparse
 import csv
+import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import sweep_aggregate  # noqa: E402
 
 # fix rod/outcome output [2] = compute rod/shape column 14 (liggghts-package/doc/fix_rod_outcome.txt)
 OUTCOME_LABELS = {0: "en route (undecided)", 1: "passed without contact", 2: "passed with contact", 3: "clogged"}
@@ -109,13 +120,45 @@ def measure_plot(args, table):
     return fig
 
 
+def probability_map(args, table):
+    need(table, args.x, args.y, args.klass)
+    cells = sweep_aggregate.probability(table, [args.x, args.y], args.klass, args.value)
+    if args.table:
+        with open(args.table, "w", newline="") as f:
+            columns = [args.x, args.y, "cases", "hits", "failed", "probability", "ci_low", "ci_high"]
+            w = csv.DictWriter(f, fieldnames=columns)
+            w.writeheader()
+            for c in cells:
+                w.writerow({k: c[k] for k in columns})
+        print(f"plot_sweep: wrote {args.table}")
+    xs = sorted({c[args.x] for c in cells}, key=lambda v: number(v) if number(v) is not None else 0)
+    ys = sorted({c[args.y] for c in cells}, key=lambda v: number(v) if number(v) is not None else 0)
+    fig, ax = plt.subplots(figsize=(1.3 * len(xs) + 3, 0.9 * len(ys) + 2))
+    grid = [[float("nan")] * len(xs) for _ in ys]
+    for c in cells:
+        i, j = ys.index(c[args.y]), xs.index(c[args.x])
+        grid[i][j] = c["probability"]
+        ax.text(j, i, f"{c['probability']:.2f}\n[{c['ci_low']:.2f}, {c['ci_high']:.2f}]\nn = {c['cases']}",
+                ha="center", va="center", fontsize=7, color="white" if c["probability"] > 0.6 else "black")
+    image = ax.imshow(grid, origin="lower", cmap="Reds", vmin=0, vmax=1, aspect="auto")
+    fig.colorbar(image, ax=ax, label=f"P({args.klass} = {args.value:g})")
+    ax.set_xticks(range(len(xs)), xs)
+    ax.set_yticks(range(len(ys)), ys)
+    ax.set_xlabel(args.xlabel or args.x)
+    ax.set_ylabel(args.ylabel or args.y)
+    ax.set_title(args.title or f"P({args.klass} = {args.value:g}) per cell, 95 % Wilson intervals")
+    return fig
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("kind", choices=["map", "measure"])
+    parser.add_argument("kind", choices=["map", "measure", "probability"])
     parser.add_argument("csv")
     parser.add_argument("--x", required=True, help="swept variable on the x axis")
     parser.add_argument("--y", required=True, help="map: swept variable on the y axis; measure: the measure")
     parser.add_argument("--class", dest="klass", default="outcome", help="map: the class measure (default outcome)")
+    parser.add_argument("--value", type=float, default=3, help="probability: the class counted (default 3, clogged)")
+    parser.add_argument("--table", help="probability: also write the cells as CSV")
     parser.add_argument("--group", help="measure: one line per value of this swept variable")
     parser.add_argument("--where", action="append", default=[], help="NAME=VALUE filter, repeatable")
     parser.add_argument("--logx", action="store_true")
@@ -127,7 +170,8 @@ def main():
     args = parser.parse_args()
     args.klass_is_outcome = args.klass == "outcome"
     table = load(args.csv, args.where)
-    fig = regime_map(args, table) if args.kind == "map" else measure_plot(args, table)
+    plots = {"map": regime_map, "measure": measure_plot, "probability": probability_map}
+    fig = plots[args.kind](args, table)
     fig.tight_layout()
     fig.savefig(args.output, dpi=120, bbox_inches="tight")
     print(f"plot_sweep: wrote {args.output}")

@@ -123,6 +123,26 @@ Prepared prepare(const Options &options, const CaseGrid &grid, const std::vector
   return p;
 }
 
+// Every rank's six accounting numbers on rank 0, sent point to point. Not
+// MPI_Gather: its binomial tree makes some workers receive from others, and
+// a worker still waiting on its last case's forked child shares its MPI
+// shared-memory segments with that child, which can take the fragment meant
+// for the parent (with 4 workers the sweep then hung in the gather about one
+// run in four). Rank 0 runs no case when there are workers, so it is the one
+// safe receiver.
+std::vector<double> accounting_at_scheduler(const double (&mine)[6], int rank, int ranks) {
+  constexpr int tag_accounting = 7;
+  if (rank != 0) {
+    MPI_Send(mine, 6, MPI_DOUBLE, 0, tag_accounting, MPI_COMM_WORLD);
+    return {};
+  }
+  std::vector<double> all(6 * static_cast<std::size_t>(ranks));
+  std::copy(mine, mine + 6, all.begin());
+  for (int r = 1; r < ranks; ++r)
+    MPI_Recv(&all[6 * static_cast<std::size_t>(r)], 6, MPI_DOUBLE, r, tag_accounting, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return all;
+}
+
 void broadcast(std::string &text) {
   long length = static_cast<long>(text.size());
   MPI_Bcast(&length, 1, MPI_LONG, 0, MPI_COMM_WORLD);
@@ -261,8 +281,7 @@ void run_cases(const Options &options, const CaseGrid &grid, const std::vector<M
   // Per-rank accounting on rank 0: cases, busy and elapsed wall, case CPU, own CPU.
   const double mine[6] = {static_cast<double>(farm.run), farm.busy_seconds, farm.elapsed_seconds,
                           farm.case_cpu_seconds, farm.own_cpu_seconds, 0.0};
-  std::vector<double> all(rank == 0 ? 6 * static_cast<std::size_t>(ranks) : 0);
-  MPI_Gather(mine, 6, MPI_DOUBLE, all.data(), 6, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  const std::vector<double> all = accounting_at_scheduler(mine, rank, ranks);
   if (rank == 0) {
     print_rank_accounting(all, ranks);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

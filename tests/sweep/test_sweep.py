@@ -17,6 +17,11 @@ Usage: test_sweep.py <test> <hsrod-sweep> <hsrod> <mpirun> <work-dir>
            fix rod/outcome read as a measure gives the paper's classes,
            passage without contact at L_rod/d_pore = 1 and clogging at 2
            (Fig. 10a), with the first contact only in the clogged case.
+  workers  a sweep of 48 cases on 4 workers (5 MPI ranks) writes every
+           case exactly once, all four workers run cases, and the rows
+           equal the same sweep on one process (the task farm at the
+           width of a small cluster job; see the Slurm job in
+           liggghts-package/sweep/slurm/).
   rods     the number of rods swept (examples/several-rods/in.several_rods,
            nrods 1 and 2, rods of 1.1 d_pore at level 2): each case has
            11 x nrods spheres; one rod alone is trapped at the cylinders,
@@ -128,6 +133,25 @@ if test == "ranks":
     x_direct = float(line[-1].split()[1]) if line else float("nan")
     check(abs(x_direct - float(case["x"])) <= 1e-12 * abs(x_direct),
           f"case E=15e3 alpha=60 U=0.04: sweep x {case['x']} equals direct hsrod x {x_direct!r}")
+
+elif test == "workers":
+    # 48 short cases (4 x 3 x 4 = 48, 50 steps each) so that the four workers
+    # compete for the scheduler's next case many times over.
+    grid = ["--var", "E", "15e3,15e4,15e5,15e6", "--var", "alpha", "0,30,60",
+            "--var", "U", "0.01:0.04:0.01", "--var", "steps", "50",
+            "--measure", "x=c_shape[2]", "--measure", "angle=c_shape[7]"]
+    n_cases = 4 * 3 * 4
+    run("workers1.csv", 1, grid)
+    run("workers4.csv", 5, grid)
+    serial, farm = rows("workers1.csv"), rows("workers4.csv")
+    ids = sorted(int(r["case"]) for r in farm)
+    check(ids == list(range(n_cases)),
+          f"4 workers: every one of the {n_cases} cases exactly once (got {len(ids)} rows, "
+          f"{len(set(ids))} distinct ids)")
+    check(all(r["status"] == "ok" for r in farm), "4 workers: every case ok")
+    check({r["rank"] for r in farm} == {"1", "2", "3", "4"},
+          f"4 workers: all four ran cases, the scheduler none (ranks {sorted({r['rank'] for r in farm})})")
+    check(stable(serial) == stable(farm), "rows of 1 process and 4 workers are identical")
 
 elif test == "resume":
     # Cases of 2000 steps (~0.1 s each): with 200 steps (~10 ms since the

@@ -10,7 +10,7 @@
 #   Pass that path to CMake as -DHSROD_OPENFOAM_SRC=... (the default there is
 #   the same location, so normally nothing needs to be passed).
 #
-# Steps (see ../shared/DESIGN.md, "Facts measured"):
+# Steps (the times are measured on this machine):
 #   1. apt-get update; apt-get install -y openfoam                (~15 s)
 #   2. deb-src entry made from the deb822 list debian.sources      (once)
 #   3. apt-get source --download-only openfoam, unpack (no patches applied

@@ -2,7 +2,7 @@
 # Levels 1-2 refitted to every resolved case of the campaign, in one command
 # (calibration/campaign/README.md):
 #   calibration/campaign/refit.sh BUILD_DIR
-# 1. collect: session-4 record + beta-range results + the straight rows of the
+# 1. collect: calibration/campaign/session4 record + beta-range results + the straight rows of the
 #    geometry campaign (N = 20; its wall, pore and bent cases are skipped) -> calibration/data/*.csv,
 #    campaign_summary.json, calibration/campaign/mesh_convergence.md
 # 2. hsrod_fit_campaign -> calibration/data/confinement_campaign.txt, its fit

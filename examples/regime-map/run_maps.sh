@@ -73,7 +73,7 @@ for map in "${maps[@]}"; do
     fig11b) run fig11b --var section 2 --var E 15e6 --var alpha 0:45:15 --var ratio 2:4:1
             plot fig11b alpha "Fig. 11b: aspect ratio 5, E = 15 MPa (hsrod, $model)" --xlabel "initial angle alpha [deg]" ;;
     # The aspect-ratio-5 maps on the full 13 x 9 grid of fig10a / fig11a
-    # (with fig10a and fig11a: the 468-case grid of issue 11's benchmark).
+    # (with fig10a and fig11a: the 468-case grid of tests/benchmarks/project_grid_cost.py).
     fig10b_full) run fig10b_full --var section 2 --var alpha 0 --var E "$E13" --var ratio 1:5:0.5
             plot fig10b_full E "Fig. 10b: aspect ratio 5, alpha = 0 (hsrod, $model)" --logx --xlabel "E [Pa]" ;;
     fig11b_full) run fig11b_full --var section 2 --var E 15e6 --var alpha 0:90:7.5 --var ratio 1:5:0.5

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Projects the CPU time of the 468-case Figs. 10-11 grid (issue 11) from
+"""Projects the CPU time of the 468-case Figs. 10-11 grid from
 measured hsrod-sweep rows, for two builds run on the same cases.
 
 Usage: project_grid_cost.py --old CSV... --new CSV... [--ar10-cpu 117]

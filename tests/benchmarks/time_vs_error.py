@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """time_vs_error: each level's run time against its error to the resolved
-reference (issue 14 item 6), for the Hele-Shaw and the pore scene, as a
+reference, for the Hele-Shaw and the pore scene, as a
 table (printed, and markdown with --markdown) and one plot (PNG).
 
 Scenes and what each error is measured against:
@@ -275,7 +275,7 @@ def plot(rows, path):
     ax.set_yscale("log")
     ax.set_xlabel("CPU time [s] (median of several runs; resolved: measured / estimated)")
     ax.set_ylabel("error to the resolved reference [%]")
-    ax.set_title("hsrod levels: run time against error (issue 14)")
+    ax.set_title("hsrod levels: run time against error")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7, loc="best")
     fig.tight_layout()

@@ -1,5 +1,5 @@
 """The immersed boundary against body-fitted solutions of the same cases
-(issue 14 item 1; calibration/validation/body_fitted/, recorded results):
+(calibration/validation/body_fitted/, recorded results):
 a lone sphere 0.5 d from a side wall and rows of three spheres 0.25 d apart
 1.5 d from it, along and normal to the wall, dragged and held in the channel
 flow (beta 0.3). For every force component carrying >= 5 % of the load, on

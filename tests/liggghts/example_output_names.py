@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The main example's output files are named by the run's variables (issue 10).
+"""The main example's output files are named by the run's variables.
 
 `-var model nonlocal` overwrote the default run's CSV, and the VTK frames of
 the two runs mixed in one dump_pore_*.vtk series. Two runs of

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Ctrl-C / SIGTERM during the background-flow solve (issue 10, item 2).
+"""Ctrl-C / SIGTERM during the background-flow solve.
 
 The pore scene's flow is solved on first use (an empty cache): ~5-15 s on
 these machines. The signal is sent as soon as hsrod reports the sparse LU

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Ctrl-C / SIGTERM during a run (issue 10, "first-hour annoyances").
+"""Ctrl-C / SIGTERM during a run.
 
 LIGGGHTS' own handler made every Ctrl-C or `timeout` drop a
 restart_forced_liggghts_<step>.data file into the working directory and

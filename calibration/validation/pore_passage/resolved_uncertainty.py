@@ -15,7 +15,7 @@ Runs (raw rodMeasures.csv of each coupled run, beside this file):
   resolved_rodMeasures_raw.csv        the reference: 8 cells per d, CFD step 2.5 us
   coupled_h6_rodMeasures_raw.csv      6 cells per d, 2.5 us
   coupled_dt5_rodMeasures_raw.csv     6 cells per d, 5 us
-  coupled_dt1.25_rodMeasures_raw.csv  6 cells per d, 1.25 us (session 15)
+  coupled_dt1.25_rodMeasures_raw.csv  6 cells per d, 1.25 us
 Mesh: the change 6 -> 8 cells per d over (8/6)^p - 1 with p = 2 assumed (the
 immersed boundary's convergence oscillates with d/h, no order is observable).
 Step (on the 6-cells mesh): the error of the 2.5 us run, the change

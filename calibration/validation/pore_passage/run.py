@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Dynamic pore passage cross-check (issue 14 item 4): one resolved, coupled
+"""Dynamic pore passage cross-check: one resolved, coupled
 rodIbFoam + LIGGGHTS run of a short rod passing a pore against hsrod's
 reduced levels 1-4 on the same scene, the paper's measures along x.
 

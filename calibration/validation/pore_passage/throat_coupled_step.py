@@ -10,7 +10,7 @@ Copies CASE/postProcessing/rodIbFoam/rodMeasures.csv to
 coupled_dt5_rodMeasures_raw.csv (beside this file; a second case, the same at
 2.5 us to 1.5 ms: coupled_dt2.5_rodMeasures_raw.csv) and prints, at equal
 rod-centre x, lateral / W and the paper angle of the recorded run
-(resolved_dt10.csv, step 10 us: the record before session 13) and of the 5 us run, and both runs' smoothed V_y / U
+(resolved_dt10.csv, step 10 us: the earlier record) and of the 5 us run, and both runs' smoothed V_y / U
 (2-point average, local quadratic fit over +-40 us in time) at the throat
 configurations of throat.py; the rigid steady value (throat_rigid.csv, finest
 resolved mesh) beside them.

@@ -6,8 +6,12 @@
   its header line to its closing brace; Python: ast's extent), except in
   generated data files (a "Do not edit: regenerate" header: one static
   table per function);
-- comments say why, not history: no "issue N" or "session N" references, no citation of
-  the project brief outside this repository (DESIGN.md);
+- comments say why, not history: no "issue N" or "session N" references, no
+  citation of the project brief kept outside this repository (its file name,
+  HISTORY), in C++ comments, Python '#' comments and docstrings, and the '#'
+  comments of CMake, shell and LIGGGHTS scripts (*.in and in.* under tests/
+  and examples/); an identifier glued to its number (the campaign "session4")
+  is not a reference;
 - liggghts-package/src: support/, screen/ and the styles' helpers do not
   include a style's header (only app/ registers styles).
 
@@ -24,7 +28,46 @@ MAX_FUNCTION_LINES = 120
 SOURCE_DIRS = ["drag-models", "liggghts-package", "calibration", "tests", "examples", "scripts", ".ci"]
 CXX = (".cpp", ".h", ".C", ".H", ".hpp")
 SKIP_DIRS = {"build", "third_party-build", "__pycache__", ".git"}
-HISTORY = re.compile(r"\bissues?\s*#?\d+|\bsession[- ]?\d+|(?<!doc/)\bDESIGN\.md\b", re.IGNORECASE)
+HISTORY = re.compile(r"\bissues?(\s+#?|\s*#)\d+|\bsession[- ]\d+|(?<!doc/)\bDESIGN\.md\b", re.IGNORECASE)
+LIGGGHTS_DIRS = ("tests/", "examples/")
+
+
+def is_liggghts_script(rel):
+    name = os.path.basename(rel)
+    return rel.startswith(LIGGGHTS_DIRS) and (name.endswith(".in") or name.startswith("in."))
+
+
+def is_hash_commented(rel):
+    """CMake, shell and LIGGGHTS scripts: '#' starts a comment."""
+    name = os.path.basename(rel)
+    return name == "CMakeLists.txt" or name.endswith((".cmake", ".sh")) or is_liggghts_script(rel)
+
+
+def hash_comment_history(rel, text):
+    """History references in the text after a line's first '#'."""
+    out = []
+    for k, l in enumerate(text.splitlines(), 1):
+        if "#" in l:
+            m = HISTORY.search(l[l.index("#"):])
+            if m:
+                out.append((k, f"{rel}:{k}: history comment or outside citation '{m.group(0)}'"))
+    return out
+
+
+def docstring_history(rel, tree, lines):
+    """History references in module, class and function docstrings, by line."""
+    out = []
+    for node in ast.walk(tree):
+        if not isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)):
+            continue
+        if ast.get_docstring(node) is None:
+            continue
+        doc = node.body[0]
+        for k in range(doc.lineno, doc.end_lineno + 1):
+            m = HISTORY.search(lines[k - 1])
+            if m:
+                out.append((k, f"{rel}:{k}: history in a docstring '{m.group(0)}'"))
+    return out
 
 
 def source_files(root):
@@ -32,8 +75,10 @@ def source_files(root):
         for base, dirs, files in os.walk(os.path.join(root, top)):
             dirs[:] = [d for d in dirs if d not in SKIP_DIRS and not d.startswith("build")]
             for name in sorted(files):
-                if name.endswith(CXX + (".py", ".sh", ".cmake")) or name == "CMakeLists.txt":
-                    yield os.path.join(base, name)
+                path = os.path.join(base, name)
+                if (name.endswith(CXX + (".py", ".sh", ".cmake")) or name == "CMakeLists.txt"
+                        or is_liggghts_script(os.path.relpath(path, root))):
+                    yield path
 
 
 def strip_cxx(text):
@@ -149,11 +194,12 @@ def main(root):
                     if length > MAX_FUNCTION_LINES:
                         problems.append(f"{rel}:{node.lineno}: function {node.name} of {length} lines "
                                         f"(limit {MAX_FUNCTION_LINES})")
-            for k, l in enumerate(text.splitlines(), 1):
-                if "#" in l:
-                    m = HISTORY.search(l[l.index("#"):])
-                    if m:
-                        problems.append(f"{rel}:{k}: history comment or outside citation '{m.group(0)}'")
+            found = dict(hash_comment_history(rel, text))
+            for k, message in docstring_history(rel, tree, text.splitlines()):
+                found.setdefault(k, message)
+            problems.extend(found[k] for k in sorted(found))
+        elif is_hash_commented(rel):
+            problems.extend(message for _, message in hash_comment_history(rel, text))
     for p in problems:
         print(p)
     print(f"structure: {len(problems)} violation(s)")

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 using namespace hsrod;
 using hsrod_test::kD;
@@ -119,19 +120,7 @@ TEST(TwoWayWindowModel, RodTurnedBetweenSolvesUsesTheTurnedResistance) {
 namespace {
 // A stream of 1 mm/s along x over a given planform (the friction does not
 // depend on the stream; the planform sets the walls of the window).
-class StreamOver : public BackgroundFlow {
- public:
-  explicit StreamOver(ChannelGeometry geometry) : geometry_(std::move(geometry)) {}
-  Eigen::Vector2d velocity(double, double) const override { return {1e-3, 0.0}; }
-  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
-  double pressure(double, double) const override { return 0.0; }
-  double mean_velocity() const override { return 1e-3; }
-  const ChannelGeometry& geometry() const override { return geometry_; }
-  std::string description() const override { return "stream over a planform"; }
-
- private:
-  ChannelGeometry geometry_;
-};
+UniformFlow stream_over(const ChannelGeometry& geometry) { return UniformFlow(geometry, {1e-3, 0.0}); }
 
 // Total in-plane friction of a rigid rod, along x and along y [N s/m].
 Eigen::Vector2d rigid_friction(const TwoWayWindowModel& model, const RodGeometry& rod, const BackgroundFlow& flow) {
@@ -144,30 +133,48 @@ Eigen::Vector2d rigid_friction(const TwoWayWindowModel& model, const RodGeometry
 }
 }  // namespace
 
+namespace {
+
+// Rods of the window checks in the pore scene's planforms (W = 200 um): the
+// straight channel's centre along and across the flow, beside its side wall,
+// the pore entrance across and the pore throat at a given angle.
+struct RodPlacement {
+  const char* name;
+  const ChannelGeometry* geometry;
+  Eigen::Vector2d centre;  // [m]
+  double degrees;          // rod axis from x
+};
+
+struct PoreSceneRods {
+  explicit PoreSceneRods(double gap)
+      : straight(make_straight_channel(600e-6, 200e-6, gap)),
+        pore(make_pore_constriction(600e-6, 200e-6, gap, 85e-6, 300e-6)) {}
+  std::vector<RodPlacement> placements(double throat_degrees) const {
+    return {{"channel centre, along x", &straight, {250e-6, 100e-6}, 0.0},
+            {"channel centre, across", &straight, {250e-6, 100e-6}, 90.0},
+            {"near side wall, along x", &straight, {250e-6, 12e-6}, 0.0},
+            {"pore entrance, across", &pore, {270e-6, 100e-6}, 90.0},
+            {throat_degrees == 0.0 ? "pore throat, along x" : "pore throat, 45 deg", &pore, {300e-6, 100e-6},
+             throat_degrees}};
+  }
+  ChannelGeometry straight, pore;
+};
+
+}  // namespace
+
 // Window convergence: the rod's friction along and across
 // its axis must not change by more than 1 % when the window grows 4x,
 // in the pore scene's straight channel (W = 200 um, beta = 0.15) and with
 // the rod in the pore throat between the two cylinders.
 TEST(TwoWayWindowModel, WindowConvergedFrictionAlongAndAcross) {
   const double beta = 0.15, gap = kD / beta;
-  const ChannelGeometry straight = make_straight_channel(600e-6, 200e-6, gap);
-  const ChannelGeometry pore = make_pore_constriction(600e-6, 200e-6, gap, 85e-6, 300e-6);
-  struct Case {
-    const char* name;
-    const ChannelGeometry* geometry;
-    Eigen::Vector2d centre;
-    double degrees;
-  };
-  const Case cases[] = {{"channel centre, along x", &straight, {250e-6, 100e-6}, 0.0},
-                        {"channel centre, across", &straight, {250e-6, 100e-6}, 90.0},
-                        {"near side wall, along x", &straight, {250e-6, 12e-6}, 0.0},
-                        {"pore throat, along x", &pore, {300e-6, 100e-6}, 0.0},
-                        {"pore entrance, across", &pore, {270e-6, 100e-6}, 90.0}};
+  const PoreSceneRods scene(gap);
+  const std::vector<RodPlacement> cases = scene.placements(0.0);
   const auto reference_model = level4(beta);
-  for (const Case& c : cases) {
+  for (const RodPlacement& c : cases) {
     RodGeometry rod = straight_rod(10, kD, c.degrees * kPi / 180.0);
     for (auto& x : rod.positions) x.head<2>() += c.centre;
-    const StreamOver flow(*c.geometry);
+    const UniformFlow flow = stream_over(*c.geometry);
     const double extent = (rod.positions.front() - rod.positions.back()).head<2>().cwiseAbs().maxCoeff() +
                           2.0 * reference_model->footprint_radius();
     TwoWayWindowOptions larger;
@@ -199,29 +206,18 @@ TEST(TwoWayWindowModel, WindowConvergedFrictionAlongAndAcross) {
 // where the coarse window resolves the cylinders' reflection least well).
 TEST(TwoWayWindowModel, TwoScalesReproduceOneScale) {
   const double beta = 0.15, gap = kD / beta;
-  const ChannelGeometry straight = make_straight_channel(600e-6, 200e-6, gap);
-  const ChannelGeometry pore = make_pore_constriction(600e-6, 200e-6, gap, 85e-6, 300e-6);
-  struct Case {
-    const char* name;
-    const ChannelGeometry* geometry;
-    Eigen::Vector2d centre;
-    double degrees;
-  };
-  const Case cases[] = {{"channel centre, along x", &straight, {250e-6, 100e-6}, 0.0},
-                        {"channel centre, across", &straight, {250e-6, 100e-6}, 90.0},
-                        {"near side wall, along x", &straight, {250e-6, 12e-6}, 0.0},
-                        {"pore entrance, across", &pore, {270e-6, 100e-6}, 90.0},
-                        {"pore throat, 45 deg", &pore, {300e-6, 100e-6}, 45.0}};
+  const PoreSceneRods scene(gap);
+  const std::vector<RodPlacement> cases = scene.placements(45.0);
   const TwoWayWindowModel two(HydrodynamicParameters{kMu, gap, kD}, ConfinementTable::default_table());
   TwoWayWindowOptions single;
   single.reflection_cells_per_diameter = single.cells_per_diameter;
   const TwoWayWindowModel one(HydrodynamicParameters{kMu, gap, kD}, ConfinementTable::default_table(), single);
   ASSERT_TRUE(two.two_scales());
   ASSERT_FALSE(one.two_scales());
-  for (const Case& c : cases) {
+  for (const RodPlacement& c : cases) {
     RodGeometry rod = straight_rod(10, kD, c.degrees * kPi / 180.0);
     for (auto& x : rod.positions) x.head<2>() += c.centre;
-    const StreamOver flow(*c.geometry);
+    const UniformFlow flow = stream_over(*c.geometry);
     const Eigen::Vector2d a = rigid_friction(two, rod, flow), b = rigid_friction(one, rod, flow);
     std::printf("%-26s friction x, y: two scales %.5g %.5g, one scale %.5g %.5g N s/m: %+.2f %+.2f %%\n", c.name,
                 a.x(), a.y(), b.x(), b.y(), 100.0 * (a.x() / b.x() - 1.0), 100.0 * (a.y() / b.y() - 1.0));

@@ -2,7 +2,8 @@
 // wall-free uniform stream, and a level-4 model with a state of its own.
 #pragma once
 
-#include "flow/background_flow.h"
+#include "common/math_constants.h"
+#include "flow/uniform_flow.h"
 #include "hydro/twoway_window_model.h"
 
 #include <memory>
@@ -12,22 +13,13 @@ namespace hsrod_test {
 
 constexpr double kMu = 1e-3;   // Pa s
 constexpr double kD = 3e-6;    // m, the pore scene's spheres
-constexpr double kPi = 3.14159265358979323846;
+using hsrod::kPi;
 
 // Uniform gap-averaged stream of 1 mm/s along x in a slit of gap H, with a
 // planform large enough to hold any window (no walls).
-class UniformSlitStream : public hsrod::BackgroundFlow {
+class UniformSlitStream : public hsrod::UniformFlow {
  public:
-  explicit UniformSlitStream(double gap) : geometry_(1.0, 1.0, gap, -0.5, -0.5) {}
-  Eigen::Vector2d velocity(double, double) const override { return {1e-3, 0.0}; }
-  Eigen::Matrix2d velocity_gradient(double, double) const override { return Eigen::Matrix2d::Zero(); }
-  double pressure(double, double) const override { return 0.0; }
-  double mean_velocity() const override { return 1e-3; }
-  const hsrod::ChannelGeometry& geometry() const override { return geometry_; }
-  std::string description() const override { return "uniform slit stream"; }
-
- private:
-  hsrod::ChannelGeometry geometry_;
+  explicit UniformSlitStream(double gap) : UniformFlow(wide_slit(gap, {1e-3, 0.0})) {}
 };
 
 // Level 4 at confinement beta = d / H for the pore scene's spheres.

@@ -112,7 +112,6 @@ struct DemLoad {
 class MomentumExchange {
  public:
   explicit MomentumExchange(const ExchangeSettings& s);
-  const ExchangeSettings& settings() const { return s_; }
   // Virtual mass of a sphere of diameter d [kg].
   double virtual_mass(double d) const;
   // Loads for LIGGGHTS from the fluid loads of the step (spheres carry v^n,

@@ -100,16 +100,6 @@ MotionMode parse_motion_mode(const std::string& name) {
                               "' (expected fixed, constantVelocity, table or coupled)");
 }
 
-const char* to_string(MotionMode m) {
-  switch (m) {
-    case MotionMode::Fixed: return "fixed";
-    case MotionMode::ConstantVelocity: return "constantVelocity";
-    case MotionMode::Table: return "table";
-    case MotionMode::Coupled: return "coupled";
-  }
-  return "?";
-}
-
 SphereSet SphereSet::read_csv(const std::string& path) { return from_text(read_file(path), path); }
 
 SphereSet SphereSet::from_text(const std::string& text, const std::string& origin) {
@@ -202,13 +192,6 @@ void SphereSet::set_spheres(std::vector<Sphere> spheres) {
   spheres_ = std::move(spheres);
   x0_.clear();
   for (const auto& sp : spheres_) x0_.push_back(sp.x);
-}
-
-void SphereSet::set_state(std::size_t k, const Vec3& x, const Vec3& v, const Vec3& omega) {
-  auto& sp = spheres_.at(k);
-  sp.x = x;
-  sp.v = v;
-  sp.omega = omega;
 }
 
 void SphereSet::write_force_header(std::ostream& os) {

@@ -4,7 +4,7 @@
 //   - force-measurement mode: spheres fixed or moved on a prescribed path
 //     (constant velocity, or a table of positions versus time),
 //   - coupled mode: positions/velocities written by the LIGGGHTS coupling
-//     (fix couple/cfd) every coupling interval via set_state().
+//     (fix couple/cfd) every coupling interval via set_spheres().
 // Forces/torques written back here by the solver are the hydrodynamic loads
 // ON the spheres (SI: N, N m).
 #pragma once
@@ -37,11 +37,10 @@ enum class MotionMode {
   Fixed,             // spheres stay where the CSV puts them (v, omega only set the BC of the body)
   ConstantVelocity,  // x(t) = x0 + v t
   Table,             // x(t) linearly interpolated from a (t,id,x,y,z) CSV; v from the slope
-  Coupled            // set externally (LIGGGHTS) through set_state()
+  Coupled            // set externally (LIGGGHTS) through set_spheres()
 };
 
 MotionMode parse_motion_mode(const std::string& name);  // throws std::invalid_argument
-const char* to_string(MotionMode m);
 
 class SphereSet {
  public:
@@ -63,8 +62,6 @@ class SphereSet {
 
   // Coupled mode: replace all spheres (the DEM side owns the list).
   void set_spheres(std::vector<Sphere> spheres);
-  // Coupled mode: state of sphere k from the DEM side.
-  void set_state(std::size_t k, const Vec3& x, const Vec3& v, const Vec3& omega);
 
   std::vector<Sphere>& spheres() { return spheres_; }
   const std::vector<Sphere>& spheres() const { return spheres_; }

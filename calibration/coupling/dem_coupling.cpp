@@ -39,14 +39,6 @@ namespace {
 using hsrod::kPi;
 }
 
-bool DemCoupling::has_package_styles() {
-#ifdef HSROD_DEM_WITH_PACKAGE
-  return true;
-#else
-  return false;
-#endif
-}
-
 DemCoupling::DemCoupling(void* mpi_comm, const std::string& script, bool echo_screen)
     : impl_(new Impl) {
   // LAMMPS gets its own argv (never OpenFOAM's)

@@ -58,8 +58,6 @@ class DemCoupling {
   // Number of fixes of exactly this style in the DEM input (e.g.
   // "couple/cfd/force/implicit"), to check the input against the exchange.
   int count_fix_style(const std::string& style) const;
-  // True if the instance has the hsrod package styles.
-  static bool has_package_styles();
 
  private:
   struct Impl;

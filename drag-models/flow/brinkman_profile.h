@@ -31,8 +31,6 @@ class BrinkmanChannelProfile {
   // Brinkman wall-layer length delta = H / sqrt(12) [m].
   double wall_layer_length() const { return 1.0 / k_; }
 
-  double width() const { return width_; }  // W [m]
-
  private:
   double width_;        // W [m]
   double k_;            // sqrt(12) / H [1/m]

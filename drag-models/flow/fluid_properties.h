@@ -9,8 +9,6 @@ struct FluidProperties {
 
   // Throws std::invalid_argument unless mu > 0 and rho_f >= 0 (both finite).
   void validate() const;
-  // Kinematic viscosity nu = mu / rho_f [m^2/s] (rho_f > 0).
-  double kinematic_viscosity() const { return dynamic_viscosity / density; }
 };
 
 }  // namespace hsrod

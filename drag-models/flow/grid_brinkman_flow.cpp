@@ -145,7 +145,6 @@ GridBrinkmanFlow::GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidP
   }
   const MacGrid& grid = choice.grid;
   exponential_wall_layer_ = choice.exponential_wall_layer;
-  estimate_ = choice.estimate;
   const std::string key =
       brinkman_cache_key(scaled, grid, inertia_reynolds_, exponential_wall_layer_);
 
@@ -167,8 +166,8 @@ GridBrinkmanFlow::GridBrinkmanFlow(const ChannelGeometry& geometry, const FluidP
 
   // Bounded work: refuse before the first allocation of solver size.
   try {
-    check_grid_solve_budget(estimate_, GridSolveLimits{options.max_cells, options.max_memory_bytes,
-                                                       options.max_predicted_seconds});
+    check_grid_solve_budget(choice.estimate, GridSolveLimits{options.max_cells, options.max_memory_bytes,
+                                                             options.max_predicted_seconds});
   } catch (const GridSolveTooLarge& e) {
     throw GridSolveTooLarge(e.what() + opening_note(geometry, options));
   }

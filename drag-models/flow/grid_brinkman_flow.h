@@ -104,11 +104,8 @@ class GridBrinkmanFlow final : public BackgroundFlow {
   // "" or what happened to the cache: a file not used (damaged, another
   // format or scene) and solved anew; old files removed to stay under the limit.
   const std::string& cache_notice() const { return cache_notice_; }
-  double solve_seconds() const { return solve_seconds_; }          // 0 if loaded
   int picard_iterations() const { return picard_iterations_; }
-  int unknowns() const { return unknowns_; }                        // 0 if loaded
   bool exponential_wall_layer() const { return exponential_wall_layer_; }
-  const GridSolveEstimate& predicted_cost() const { return estimate_; }
   const StaggeredField& field() const { return field_; }
   double cell_size_x() const { return field_.grid().hx * geometry_.gap_height(); }  // m
   double cell_size_y() const { return field_.grid().hy * geometry_.gap_height(); }  // m
@@ -148,7 +145,6 @@ class GridBrinkmanFlow final : public BackgroundFlow {
   int picard_iterations_ = 0;
   int unknowns_ = 0;
   bool exponential_wall_layer_ = false;
-  GridSolveEstimate estimate_;
 };
 
 }  // namespace hsrod

@@ -35,10 +35,6 @@ double Inflow::mean_velocity_in(const ChannelGeometry& geometry) const {
                                       : value_ / (geometry.width() * geometry.gap_height());
 }
 
-double Inflow::flow_rate_in(const ChannelGeometry& geometry) const {
-  return mean_velocity_in(geometry) * geometry.width() * geometry.gap_height();
-}
-
 double hydraulic_diameter(const ChannelGeometry& geometry) {
   const double w = geometry.width(), h = geometry.gap_height();
   return 4.0 * w * h / (2.0 * w + 2.0 * h);

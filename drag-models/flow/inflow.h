@@ -16,8 +16,6 @@ class Inflow {
 
   // Mean inlet velocity U [m/s] in the given channel.
   double mean_velocity_in(const ChannelGeometry& geometry) const;
-  // Flow rate Q = U W H [m^3/s] in the given channel.
-  double flow_rate_in(const ChannelGeometry& geometry) const;
 
  private:
   enum class Kind { kMeanVelocity, kFlowRate };

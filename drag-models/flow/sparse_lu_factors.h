@@ -26,7 +26,6 @@ class SparseLuFactors {
   explicit SparseLuFactors(const Eigen::SparseMatrix<double>& matrix);
 
   int rows() const { return n_; }
-  long factor_entries() const { return static_cast<long>(l_values_.size() + u_values_.size()); }
   // Solves A X = B for all columns of B.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const;
   // The same for a B given by its non-zeros (column c: (row, value) pairs,

@@ -45,13 +45,9 @@ class WindowFlowField {
   // Mean p' over the upstream column of cells minus that over the downstream
   // one [Pa] (the rod's pressure rise across the window).
   double upstream_rise() const { return upstream_rise_; }
-  // True when the window closes a cross-section of the channel; closed_section_x()
-  // [m] is the most upstream such section (NaN if none).
+  // True when the window closes a cross-section of the channel.
   bool spans_channel() const { return !std::isnan(closed_section_x_); }
-  double closed_section_x() const { return closed_section_x_; }
-  // The solution at the nodes (rows as the window's nodes()) [m/s] and per
-  // cell [Pa] (NaN without fluid), after the gauge shift.
-  const Eigen::VectorXd& node_velocity() const { return node_velocity_; }
+  // The solution per cell [Pa] (NaN without fluid), after the gauge shift.
   const std::vector<double>& cell_pressure() const { return cell_pressure_; }
 
  private:

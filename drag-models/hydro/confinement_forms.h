@@ -60,7 +60,6 @@ inline double rod_n_law_asymptote(double c_m, double c_1, double g, int m, doubl
 // (k fitted, see perpendicular_growth in confinement_coefficients.h; one
 // term k_0 is the constant-k form).
 inline double rod_growth(double beta, const double* k, int nk) { return beta * beta * polynomial(k, nk, beta); }
-inline double rod_growth(double beta, double k) { return rod_growth(beta, &k, 1); }
 
 // Force-free velocity of a straight rod of n spheres (over the gap-mean
 // velocity): its held load per sphere over its friction per sphere, both

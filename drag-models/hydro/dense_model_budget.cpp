@@ -9,11 +9,6 @@ double nonlocal_model_bytes(long spheres) {
   return kNonlocalDenseMatrices * m * m * sizeof(double);
 }
 
-double nonlocal_model_flops(long spheres) {
-  const double m = 3.0 * static_cast<double>(spheres);
-  return 2.0 * (2.0 / 3.0) * m * m * m;
-}
-
 bool nonlocal_model_fits(long spheres, double limit_bytes) {
   return nonlocal_model_bytes(spheres) <= limit_bytes;
 }

@@ -18,10 +18,6 @@ inline constexpr int kNonlocalDenseMatrices = 6;
 // for a rod of `spheres` spheres: kNonlocalDenseMatrices (3n)^2 doubles.
 double nonlocal_model_bytes(long spheres);
 
-// Predicted flops of one level-3 evaluation and step (two dense LU-type
-// factorisations of 3n x 3n: 2 x (2/3)(3n)^3) [-].
-double nonlocal_model_flops(long spheres);
-
 // True when the level-3 model for `spheres` spheres fits `limit_bytes`.
 bool nonlocal_model_fits(long spheres, double limit_bytes);
 

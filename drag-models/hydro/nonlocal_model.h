@@ -110,7 +110,6 @@ class NonlocalRodModel : public LocalDragBase {
 
   double film_friction() const { return film_friction_; }              // zeta_f [N s/m]
   double obstruction_friction() const { return obstruction_friction_; }  // zeta_o [N s/m]
-  const NearFieldAtBeta& near_field() const { return near_field_; }
 
  private:
   // zeta_o (I + zeta_o M)^-1 and, when the held load has its own near field,

@@ -81,8 +81,6 @@ class RodHydrodynamics {
   const BackgroundFlow& flow() const { return *flow_; }
   double gap_bottom() const { return gap_bottom_; }  // z of the lower gap wall [m]
   double viscosity() const { return viscosity_; }     // mu [Pa s]
-  int spheres_per_section() const { return spec_.spheres_per_section; }
-  const ModelSpec& model_spec() const { return spec_; }
   // True when x [m] lies in the fluid: inside the planform and the gap.
   bool in_fluid(const Eigen::Vector3d& x) const;
   // A rod of this scene: sphere centres (ordered section by section) and diameter.

@@ -83,19 +83,11 @@ bool LatticeGreenTable::covers(const std::vector<Eigen::Vector3d>& centres) cons
   return widest + 4.0 * std::sqrt(2.0) * kernel_width_ + h_ <= reach_;
 }
 
-double LatticeGreenTable::g(int source, int target, const Eigen::Vector2i& offset) const {
-  if (offset.cwiseAbs().maxCoeff() > half_) throw std::out_of_range("LatticeGreenTable: offset beyond the table");
-  const int side = 2 * half_ + 1;
-  const double value = table_[source][target][static_cast<std::size_t>(offset.x() + half_) * side + offset.y() + half_];
-  if (std::isnan(value)) throw std::out_of_range("LatticeGreenTable: offset not tabulated");
-  return value;
-}
-
 Eigen::Matrix2d LatticeGreenTable::pair(const LatticeFootprint& fi, const LatticeFootprint& fj) const {
-  // As g() per node pair, with the range check once per footprint pair (the
-  // largest offset is that of the footprints' bounding boxes) and the check
-  // for untabulated offsets on the sum (a NaN entry makes it NaN): the same
-  // products summed in the same order as one g() per term.
+  // The table entry of each node pair's offset, with the range check once
+  // per footprint pair (the largest offset is that of the footprints'
+  // bounding boxes) and the check for untabulated offsets on the sum (a NaN
+  // entry makes it NaN).
   const int side = 2 * half_ + 1;
   Eigen::Matrix2d m;
   for (int a = 0; a < 2; ++a)

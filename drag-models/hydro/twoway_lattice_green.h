@@ -46,9 +46,6 @@ class LatticeGreenTable {
   // forces at the u node (0, h/2) and the v node (h/2, 0).
   LatticeGreenTable(const BrinkmanWindow& free_window, double kernel_width, double reach);
 
-  double spacing() const { return h_; }                  // h [m]
-  double kernel_width() const { return kernel_width_; }  // w [m]
-  double reach() const { return reach_; }                // largest offset tabulated [m]
   // True if the footprints of spheres at `centres` [m] are all within reach of each other.
   bool covers(const std::vector<Eigen::Vector3d>& centres) const;
   // In-plane footprint mobility M [m/(N s)] (2n x 2n, x and y per sphere)
@@ -63,9 +60,7 @@ class LatticeGreenTable {
   Eigen::Matrix2d pair(const LatticeFootprint& i, const LatticeFootprint& j) const;
 
  private:
-  double g(int source, int target, const Eigen::Vector2i& offset) const;
-
-  double h_ = 0.0, kernel_width_ = 0.0, reach_ = 0.0;
+  double h_ = 0.0, kernel_width_ = 0.0, reach_ = 0.0;  // h [m], w [m], largest offset tabulated [m]
   int half_ = 0;                    // doubled offsets in [-half_, half_] per axis
   std::vector<double> table_[2][2];  // [force component][velocity component], row-major over doubled offsets
 };

@@ -44,7 +44,6 @@ class NearFieldTwoWayModel : public TwoWayWindowModel {
                        const TwoWayWindowOptions& options = {});
   using HydrodynamicModel::evaluate;
   void evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, ModelState* state) const override;
-  const NearFieldAtBeta& near_field() const { return near_field_; }
 
  private:
   NearFieldAtBeta near_field_;

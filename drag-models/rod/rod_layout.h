@@ -27,7 +27,6 @@ struct RodSpec {
   int section_layers = 1;                 // spheres across the height (z) of a section
 
   double effective_spacing() const { return spacing > 0.0 ? spacing : sphere_diameter; }
-  int spheres_per_section() const { return section_rows * section_layers; }
   // Length of the rod in the paper's sense, L_Rod = N d [m].
   double rod_length() const { return number_of_sections * effective_spacing(); }
   // Throws std::invalid_argument naming the bad field.

@@ -58,7 +58,6 @@ void RodOutcomeTracker::observe(const RodOutcomeSample& s) {
   if ((s.touching_below || s.touching_above) && first_contact_time_ < 0.0) {
     first_contact_time_ = s.time;
     first_contact_position_ = s.contact_position;
-    first_contact_centre_ = s.centre;
   }
   if (s.touching_below) last_below_ = s.time;
   if (s.touching_above) last_above_ = s.time;

@@ -81,12 +81,9 @@ class RodOutcomeTracker {
   bool touched() const { return first_contact_time_ >= 0.0; }
   double first_contact_time() const { return first_contact_time_; }  // [s], -1 if never
   Eigen::Vector2d first_contact_position() const { return first_contact_position_; }  // [m]
-  Eigen::Vector2d first_contact_centre() const { return first_contact_centre_; }  // rod centre then [m]
   double averaged_velocity_ratio() const { return averaged_ratio_; }  // <v_x>/U [-]
   bool stalled() const { return stalled_; }
   bool pinned() const { return pinned_; }
-  // Stalled and (pinned or held) at the last settle(): the clog clock runs.
-  bool trapped() const { return trapped_since_ >= 0.0; }
   // The rod holding this one when it was decided clogged (-1: the walls).
   int held_by() const { return held_by_; }
   // How long the rod has been stalled and pinned without interruption [s].
@@ -106,7 +103,6 @@ class RodOutcomeTracker {
   int held_by_ = -1;                              // holder when clogged (-1: walls)
   double first_contact_time_ = -1.0;
   Eigen::Vector2d first_contact_position_ = Eigen::Vector2d::Zero();
-  Eigen::Vector2d first_contact_centre_ = Eigen::Vector2d::Zero();
   double decision_time_ = -1.0;
   Eigen::Vector2d decision_centre_ = Eigen::Vector2d::Zero();
 };

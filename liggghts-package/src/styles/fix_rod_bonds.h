@@ -84,7 +84,6 @@ class FixRodBonds : public Fix, public RodBondRecords {
   // implicit_partners.h) this fix neither moves orientations nor adds bond
   // loads; the integrator writes the new orientations back (set_orientation)
   // and reports the bonds' state (set_implicit_bond_state).
-  bool integrated_implicitly() const { return integrated_implicitly_; }
   // Under fix rod/implicit the bonds are evaluated by the integrator, which
   // provides what f_ID shows: this processor's share of the elastic energy
   // [J] and the largest |axial strain| [-] after its last step. It is asked

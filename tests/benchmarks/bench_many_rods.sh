@@ -3,7 +3,8 @@
 # 10 spheres (tests/benchmarks/scripts/in.many_rods: create_rods at area
 # fraction ~5 %, rod-rod Hertz contact with friction, straight channel,
 # beta 0.15) against the number of rods, at the levels in MODELS, median of
-# REPEATS runs, on one core; and the same 100-rod run on 1 and 2 MPI ranks
+# REPEATS runs, on one core, with the 1-minute load after each count (the
+# machine may be shared: compare ratios within one run); and the same 100-rod run on 1 and 2 MPI ranks
 # (largest difference of the final sphere positions, relative to d).
 # Usage: tests/benchmarks/bench_many_rods.sh [work-dir]   (after scripts/build.sh)
 # Environment: COUNTS (default "10 100 1000"), MODELS (default "local"),
@@ -19,7 +20,7 @@ steps="${STEPS:-100}"
 repeats="${REPEATS:-3}"
 cd "$work"
 echo "== many rods: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), $(git -C "$root" rev-parse --short HEAD), $steps steps"
-printf "%-8s %7s %12s %14s %16s\n" model rods "loop [s]" "per rod-step" "vs 100 rods"
+printf "%-8s %7s %12s %14s %16s %8s\n" model rods "loop [s]" "per rod-step" "vs 100 rods" "load"
 for model in $models; do
   ref=""
   for n in $counts; do
@@ -33,7 +34,7 @@ for model in $models; do
     per=$(awk -v t="$median" -v n="$n" -v s="$steps" 'BEGIN {printf "%.3g", t / (n * s)}')
     [ "$n" = 100 ] && ref=$per
     growth=$([ -n "$ref" ] && awk -v a="$per" -v b="$ref" 'BEGIN {printf "%.2fx", a / b}' || echo "-")
-    printf "%-8s %7s %12s %12s s %16s\n" "$model" "$n" "$median" "$per" "$growth"
+    printf "%-8s %7s %12s %12s s %16s %8s\n" "$model" "$n" "$median" "$per" "$growth" "$(cut -d' ' -f1 /proc/loadavg)"
   done
 done
 # 1 vs 2 ranks: the same rods and the same trajectory (to round-off).

@@ -260,6 +260,24 @@ void add_bonds(Atom *atom, Force *force, const hsrod::RodLayout &layout, const s
 }  // namespace
 
 void CreateRod::command(int narg, char **arg) {
+  NextRodIds next = next_ids();
+  add(narg, arg, next, true);
+  finish();
+}
+
+// New IDs continue after the largest existing ones.
+CreateRod::NextRodIds CreateRod::next_ids() {
+  int local_max[2] = {0, 0};
+  for (int i = 0; i < atom->nlocal; i++) {
+    local_max[0] = std::max(local_max[0], atom->tag[i]);
+    local_max[1] = std::max(local_max[1], atom->molecule[i]);
+  }
+  int global_max[2];
+  MPI_Allreduce(local_max, global_max, 2, MPI_INT, MPI_MAX, world);
+  return {global_max[0] + 1, global_max[1] + 1};
+}
+
+void CreateRod::add(int narg, char **arg, NextRodIds &next, bool report) {
   if (domain->box_exist == 0) error->all(FLERR, "create_rod command before simulation box is defined");
   if (!atom->molecular || !atom->molecule_flag || !atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "create_rod requires an atom style with spheres, bonds and molecule IDs "
@@ -271,17 +289,8 @@ void CreateRod::command(int narg, char **arg) {
   const hsrod::RodLayout layout = build_layout(domain, error, request);
   reserve_bonds(atom, force, error, layout, request.bond_type);
 
-  // New IDs continue after the largest existing ones.
-  int local_max[2] = {0, 0};
-  for (int i = 0; i < atom->nlocal; i++) {
-    local_max[0] = std::max(local_max[0], atom->tag[i]);
-    local_max[1] = std::max(local_max[1], atom->molecule[i]);
-  }
-  int global_max[2];
-  MPI_Allreduce(local_max, global_max, 2, MPI_INT, MPI_MAX, world);
-  const int first_tag = global_max[0] + 1;
-  const int mol = request.mol == 0 ? global_max[1] + 1 : request.mol;
-
+  const int first_tag = next.tag;
+  const int mol = request.mol == 0 ? next.mol : request.mol;
   const int nlocal_before = atom->nlocal;
   const std::vector<int> local_index = create_spheres(atom, domain, request, layout, first_tag, mol);
   int created_here = atom->nlocal - nlocal_before, created = 0;
@@ -297,14 +306,9 @@ void CreateRod::command(int narg, char **arg) {
 
   atom->natoms += created;
   atom->nbonds += static_cast<bigint>(layout.bonds.size());
-  if (atom->map_style) {
-    atom->nghost = 0;
-    atom->map_init();
-    atom->map_set();
-  }
-  Special special(lmp);
-  special.build();
-
+  next.tag = first_tag + created;
+  next.mol = std::max(next.mol, mol + 1);
+  if (!report) return;
   if (comm->me == 0) {
     char msg[256];
     std::snprintf(msg, sizeof(msg),
@@ -314,4 +318,17 @@ void CreateRod::command(int narg, char **arg) {
     if (screen) fputs(msg, screen);
     if (logfile) fputs(msg, logfile);
   }
+}
+
+// The atom map and the special (1-2, 1-3, ...) lists once after the last
+// rod: both are rebuilt over all atoms, so per rod they made seeding N rods
+// O(N^2).
+void CreateRod::finish() {
+  if (atom->map_style) {
+    atom->nghost = 0;
+    atom->map_init();
+    atom->map_set();
+  }
+  Special special(lmp);
+  special.build();
 }

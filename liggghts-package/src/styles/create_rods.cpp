@@ -11,6 +11,8 @@
 
 #include "create_rods.h"
 
+#include "create_rod.h"
+
 #include "common/math_constants.h"
 #include "fix_hele_shaw_drag.h"
 #include "keyword_parsing.h"
@@ -18,7 +20,6 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
-#include "input.h"
 #include "modify.h"
 
 #include "geometry/rod_seeding.h"
@@ -26,6 +27,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
@@ -152,6 +154,10 @@ void CreateRods::command(int narg, char **arg) {
     error->all(FLERR, msg.c_str());
   }
   const double z = scene.gap_bottom() + 0.5 * scene.geometry().gap_height();
+  // Each rod as the create_rod command would read it (the same text, so the
+  // same numbers), without the map and special-list rebuild per rod.
+  CreateRod creator(lmp);
+  CreateRod::NextRodIds next = creator.next_ids();
   for (const hsrod::SeededRod &rod : rods) {
     char line[512];
     std::snprintf(line, sizeof(line),
@@ -159,13 +165,22 @@ void CreateRods::command(int narg, char **arg) {
                   "angle %.17g bond_type %d",
                   a.seeding.spheres, a.seeding.sphere_diameter, a.type, a.density, rod.centre.x(), rod.centre.y(), z,
                   rod.angle * 180.0 / hsrod::kPi, a.bond_type);
-    std::string command = line;
+    std::string command = line + std::strlen("create_rod ");
     if (a.seeding.spacing > 0) {
       std::snprintf(line, sizeof(line), " spacing %.17g", a.seeding.spacing);
       command += line;
     }
-    input->one(command.c_str());
+    std::vector<std::string> words;
+    for (std::size_t at = 0; at < command.size();) {
+      const std::size_t end = std::min(command.find(' ', at), command.size());
+      if (end > at) words.push_back(command.substr(at, end - at));
+      at = end + 1;
+    }
+    std::vector<char *> args;
+    for (std::string &w : words) args.push_back(&w[0]);
+    creator.add(static_cast<int>(args.size()), args.data(), next, false);
   }
+  creator.finish();
   if (comm->me == 0) {
     const double phi = hsrod::rod_area_fraction(scene.geometry(), a.seeding, static_cast<int>(rods.size()));
     char msg[256];

@@ -75,6 +75,11 @@ std::unique_ptr<HydrodynamicModel> make_level_model(const std::string& model_nam
                                                     const NearFieldCalibration& near_field) {
   const double beta = p.beta();  // the near field's parameters are functions of beta
   if (model_name == "nonlocal") return std::make_unique<NonlocalRodModel>(p, table, near_field.nonlocal.at(beta));
+  if (model_name == "nonlocal+images") {  // level 3 with the walls' images (hydro/wall_images.h)
+    auto model = std::make_unique<NonlocalRodModel>(p, table, near_field.nonlocal.at(beta));
+    model->set_wall_reflection(WallReflection::images);
+    return model;
+  }
   if (model_name == "twoway")
     return std::make_unique<NearFieldTwoWayModel>(p, table, TwoWayWindowOptions{}, near_field.twoway.at(beta));
   return make_hydrodynamic_model(model_name, p, table);

@@ -106,7 +106,9 @@ void turned(const Eigen::MatrixXd& m, double c, double s, Eigen::MatrixXd& out) 
 WallReflection wall_reflection_from_name(const std::string& name) {
   if (name == "none") return WallReflection::none;
   if (name == "images") return WallReflection::images;
-  throw std::invalid_argument("nonlocal: wall reflection '" + name + "': accepted values are none, images");
+  if (name == "self_images") return WallReflection::self_images;
+  throw std::invalid_argument("nonlocal: wall reflection '" + name +
+                              "': accepted values are none, images, self_images");
 }
 
 void NonlocalRodModel::solve_coupling(const RodGeometry& rod, const ChannelGeometry* walls,
@@ -164,7 +166,8 @@ void NonlocalRodModel::add_wall_images(const RodGeometry& rod, const ChannelGeom
   const double mu = parameters_.viscosity, H = parameters_.gap_height;
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector2d xi = rod.positions[i].head<2>();
-    for (int k = i; k < n; ++k) {
+    const int last = wall_reflection_ == WallReflection::self_images ? i + 1 : n;
+    for (int k = i; k < last; ++k) {
       const Eigen::Vector2d xk = rod.positions[k].head<2>();
       // reciprocal to round-off (wall_images.h): symmetrised
       const Eigen::Matrix2d g = 0.5 * scale *
@@ -196,7 +199,7 @@ void NonlocalRodModel::evaluate_with(const RodGeometry& rod, const BackgroundFlo
   Eigen::MatrixXd solved_obstruction, solved_driving;
   const Eigen::MatrixXd* obstruction = &solved_obstruction;  // R_o in the plane, 2n x 2n
   const Eigen::MatrixXd* driving = &solved_driving;          // its held-load twin (empty: R_o)
-  const ChannelGeometry* walls = wall_reflection_ == WallReflection::images ? &flow.geometry() : nullptr;
+  const ChannelGeometry* walls = wall_reflection_ != WallReflection::none ? &flow.geometry() : nullptr;
   if (!state) {
     solve_coupling(rod, walls, solved_obstruction, solved_driving);
   } else {

@@ -70,10 +70,11 @@ struct NonlocalState : ModelState {
 double depth_averaged_interaction_reach(double gap_height, double viscosity, double obstruction_friction,
                                         double tolerance);
 
-// How level 3 treats the walls that span the gap: `none` (free-space G) or
-// `images` (hydro/wall_images.h).
-enum class WallReflection { none, images };
-// "none" | "images"; throws std::invalid_argument naming the accepted values.
+// How level 3 treats the walls that span the gap: `none` (free-space G),
+// `images` (hydro/wall_images.h) or `self_images` (each sphere's own image
+// only, the diagonal blocks: what a per-sphere level could carry).
+enum class WallReflection { none, images, self_images };
+// "none" | "images" | "self_images"; throws std::invalid_argument naming the accepted values.
 WallReflection wall_reflection_from_name(const std::string& name);
 
 class NonlocalRodModel : public LocalDragBase {

@@ -124,5 +124,6 @@ TEST(WallImages, LevelThreeResistanceStaysSymmetricPositiveDefiniteAndGrowsNearT
 TEST(WallImages, UnknownReflectionNameIsRejected) {
   EXPECT_EQ(wall_reflection_from_name("images"), WallReflection::images);
   EXPECT_EQ(wall_reflection_from_name("none"), WallReflection::none);
+  EXPECT_EQ(wall_reflection_from_name("self_images"), WallReflection::self_images);
   EXPECT_THROW(wall_reflection_from_name("mirror"), std::invalid_argument);
 }

@@ -41,7 +41,9 @@ RowResponse row_response(const std::string& model, double beta, int n, double sp
                          const NearFieldCalibration& near_field = NearFieldCalibration::built_in());
 
 // The model of a level as the cross-check evaluates it: levels 3-4
-// (nonlocal, twoway) with the given near field, the others from the registry.
+// (nonlocal, twoway) with the given near field, the others from the registry;
+// "nonlocal+images", "nonlocal+self_images": level 3 with the walls' images
+// (WallReflection::images, self_images).
 std::unique_ptr<HydrodynamicModel> make_level_model(const std::string& model, const HydrodynamicParameters& parameters,
                                                     const ConfinementTable& table,
                                                     const NearFieldCalibration& near_field);

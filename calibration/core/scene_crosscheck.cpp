@@ -44,6 +44,7 @@ std::vector<SceneCase> read_scene_cases(const std::string& path) {
     c.name = r.at("case");
     c.geometry = r.at("geometry");
     c.load = r.at("load");
+    if (const auto role = r.find("role"); role != r.end()) c.role = role->second;
     c.beta = number(r, "beta");
     c.gap_over_d = number(r, "gap_over_d");
     c.row_angle_deg = number(r, "row_angle_deg");

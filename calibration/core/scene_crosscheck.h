@@ -31,6 +31,7 @@ struct SceneCase {
   std::string name;             // configuration (geometry_cases.py "case")
   std::string geometry;         // bent | wall | pore
   std::string load;             // friction | driving
+  std::string role = "fit";     // the plan's role (fit, or *_heldout: left out of every fit)
   double beta = 0.0;            // d / H [-]
   double gap_over_d = 0.0;      // smallest surface gap to the wall / pore cylinder [d]
   double row_angle_deg = 0.0;   // in-plane angle of the row to the wall (x axis) [deg]

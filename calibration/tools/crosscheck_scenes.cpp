@@ -4,7 +4,7 @@
 //
 //   hsrod_crosscheck_scenes CASES.csv OUT.csv [--levels isotropic,local,nonlocal,twoway]
 //                           [--table FILE] [--near-field FILE|off] [--label TEXT]
-//                           [--wall-record FILE] [--wall-record-cpp FILE]
+//                           [--wall-record FILE] [--wall-record-cpp FILE] [--case-table FILE]
 //
 // CASES.csv: calibration/data/resolved_geometry_per_sphere.csv
 // (calibration/tools/geometry_cases.py; the finest mesh of every case is
@@ -24,6 +24,11 @@
 // the distance to walls and pores (calibration/data/level_error_near_walls.csv);
 // --wall-record-cpp: the same rows (walls and pores) as `auto`'s built-in
 // near-wall record (drag-models/hydro/auto_near_wall_record.cpp).
+// --case-table: one row per level and case (geometry, role, gap, row angle,
+// load): errors of the totals F_x, F_y (model / resolved - 1), of the total
+// vector (|F_model - F_resolved| / |F_resolved|), the profile RMS, and the
+// resolved total's change from the next coarser mesh over |F| (its numerical
+// uncertainty; nan without a coarser mesh).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -44,7 +49,7 @@ namespace {
 struct Options {
   std::string cases_path, out_path, table_path, near_field_path, label = "built-in",
                                                                  levels = "isotropic,local,nonlocal,twoway";
-  std::string wall_record, wall_record_cpp;
+  std::string wall_record, wall_record_cpp, case_table;
 };
 
 void add_options(CLI::App& app, Options& o) {
@@ -56,6 +61,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--label", o.label, "label of this table in the output");
   app.add_option("--wall-record", o.wall_record, "write the worst errors per level, geometry and gap (CSV)");
   app.add_option("--wall-record-cpp", o.wall_record_cpp, "write the near-wall rows as auto's built-in record (C++)");
+  app.add_option("--case-table", o.case_table, "write one row of total and profile errors per level and case (CSV)");
 }
 
 // worst |error| of one level over the cases of a (geometry, beta, gap/d):
@@ -68,13 +74,19 @@ using Cells = std::map<std::tuple<std::string, double, double>, Cell>;  // (geom
 using Worst = std::map<std::string, std::pair<double, double>>;         // printed group -> (totals, RMS)
 
 // one case and level: OUT.csv rows (totals, profile RMS, per sphere), worst errors
-void compare_case(std::ostream& out, const std::string& label, const std::string& level, const SceneCase& c,
-                  const std::vector<Eigen::Vector2d>& m, Worst& worst, Cells& cells) {
-  Eigen::Vector2d tm = Eigen::Vector2d::Zero(), tr = Eigen::Vector2d::Zero();
+void compare_case(std::ostream& out, std::ostream* case_table, const std::string& level, const SceneCase& c,
+                  const std::vector<Eigen::Vector2d>& m, Worst& worst, Cells& cells, const std::string& label) {
+  Eigen::Vector2d tm = Eigen::Vector2d::Zero(), tr = Eigen::Vector2d::Zero(), dr = Eigen::Vector2d::Zero();
   for (std::size_t i = 0; i < m.size(); ++i) {
     tm += m[i];
     tr += c.resolved[i];
+    dr += c.mesh_change[i];
   }
+  if (case_table)
+    *case_table << level << ',' << c.name << ',' << c.geometry << ',' << c.role << ',' << c.beta << ','
+                << c.gap_over_d << ',' << c.row_angle_deg << ',' << c.load << ',' << tr[0] << ',' << tr[1] << ','
+                << tm[0] / tr[0] - 1.0 << ',' << tm[1] / tr[1] - 1.0 << ',' << (tm - tr).norm() / tr.norm() << ','
+                << profile_rms(m, c.resolved) << ',' << dr.norm() / tr.norm() << '\n';
   char head[512];
   std::snprintf(head, sizeof head, "%s,%s,%s,%s,%g,%zu,%g,%g,%g,%s", label.c_str(), level.c_str(), c.name.c_str(),
                 c.geometry.c_str(), c.beta, m.size(), c.gap_over_d, c.row_angle_deg, c.bend_deg, c.load.c_str());
@@ -82,7 +94,7 @@ void compare_case(std::ostream& out, const std::string& label, const std::string
   if (c.geometry == "bent")
     std::snprintf(group_name, sizeof group_name, "bent b%.2f", c.beta);
   else
-    std::snprintf(group_name, sizeof group_name, "%s b%.2f gap %.1f d", c.geometry.c_str(), c.beta, c.gap_over_d);
+    std::snprintf(group_name, sizeof group_name, "%s b%.2f gap %g d", c.geometry.c_str(), c.beta, c.gap_over_d);
   const std::string group = group_name;
   auto& w = worst[group];
   for (int k = 0; k < 2; ++k) {
@@ -136,7 +148,7 @@ void report_level(const std::string& label, const std::string& level, const Cell
 // one level against every case
 void crosscheck_level(const std::string& label, const std::string& level, const std::vector<SceneCase>& cases,
                       const hsrod::ConfinementTable& table, const hsrod::NearFieldCalibration& near_field,
-                      std::ostream& out, std::ofstream& record, std::ostream& cpp_rows) {
+                      std::ostream& out, std::ofstream& record, std::ostream& cpp_rows, std::ostream* case_table) {
   Worst worst;
   Cells cells;
   for (const SceneCase& c : cases) {
@@ -147,7 +159,7 @@ void crosscheck_level(const std::string& label, const std::string& level, const 
       std::printf("%-9s %-26s %-8s: not evaluated: %s\n", level.c_str(), c.name.c_str(), c.load.c_str(), e.what());
       continue;
     }
-    compare_case(out, label, level, c, m, worst, cells);
+    compare_case(out, case_table, level, c, m, worst, cells, label);
   }
   report_level(label, level, cells, worst, record, cpp_rows);
 }
@@ -203,12 +215,21 @@ int main(int argc, char** argv) {
              << table.source() << "\nlevel,geometry,beta,gap_over_d,gap_over_H,cases,force_error,profile_rms\n";
       record.precision(4);
     }
+    std::ofstream case_table;
+    if (!o.case_table.empty()) {
+      case_table.open(o.case_table);
+      case_table << "# hsrod_crosscheck_scenes --case-table " << o.cases_path << "; table: " << table.source()
+                 << "; forces over 3 pi mu d U\nlevel,case,geometry,role,beta,gap_over_d,row_angle_deg,load,"
+                    "Fx_resolved,Fy_resolved,Fx_error,Fy_error,total_error,profile_rms,resolved_mesh_change\n";
+      case_table.precision(4);
+    }
     std::ostringstream cpp_rows;
     cpp_rows.precision(6);
     std::stringstream levels_in(o.levels);
     std::string level;
     while (std::getline(levels_in, level, ','))
-      crosscheck_level(o.label, level, cases, table, near_field, out, record, cpp_rows);
+      crosscheck_level(o.label, level, cases, table, near_field, out, record, cpp_rows,
+                       case_table.is_open() ? &case_table : nullptr);
     if (!o.wall_record_cpp.empty()) write_wall_record_cpp(o.wall_record_cpp, o.cases_path, table, cpp_rows.str());
     std::printf("wrote %s\n", o.out_path.c_str());
   } catch (const std::exception& e) {

@@ -3,7 +3,7 @@
 // side wall and beside a pore cylinder (campaign "geometry").
 //
 //   hsrod_fit_wall_proximity CASES.csv --json OUT.json --cpp OUT.cpp
-//                            [--hold-out CASE,CASE,...]
+//                            [--hold-out CASE,CASE,...] [--levels twoway,nonlocal,local]
 //
 // CASES.csv: calibration/data/resolved_geometry_per_sphere.csv (finest mesh).
 // For each level family (levels 1-2: fitted on level 2, `local`; level 3;
@@ -126,6 +126,7 @@ std::string number(double v) {
 struct Options {
   std::string cases_path, json_path, cpp_path,
       hold_out = "wall_a45_g1.5_b0.300_n5,wall_a0_g0.5_b0.300_n10,pore_a90_g1.5_b0.300_n5";
+  std::string levels = "twoway,nonlocal,local";
   bool friction_only = false;
 };
 
@@ -134,6 +135,9 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--json", o.json_path, "fit report (parameters, uncertainties, residuals)")->required();
   app.add_option("--cpp", o.cpp_path, "built-in law (drag-models/hydro/wall_proximity_fit.cpp)")->required();
   app.add_option("--hold-out", o.hold_out, "cases (both loads) left out of the fit");
+  app.add_option("--levels", o.levels,
+                 "levels to fit, twoway first (its screening is the others'); nonlocal+images: level 3 with the "
+                 "walls' images, fitted into the nonlocal slot");
   app.add_flag("--friction-only", o.friction_only, "held-load parameters b_n, b_t, b_q fixed at 0");
 }
 
@@ -344,13 +348,18 @@ int main(int argc, char** argv) {
     // effect, not a near-wall one), which slowed the dynamic pore passage of
     // level 2 by 6 % (calibration/validation/pore_passage).
     double ln_screening_level4 = NAN;
-    for (const std::string level : {"twoway", "nonlocal", "local"}) {
+    std::vector<std::string> levels;
+    {
+      std::stringstream in(o.levels);
+      for (std::string l; std::getline(in, l, ',');) levels.push_back(l);
+    }
+    for (const std::string& level : levels) {
       const std::vector<Prepared> prepared = prepare(level, cases, table, off);
       const LevelFit fit = fit_level(prepared, held, level != "twoway" ? ln_screening_level4 : NAN, o.friction_only);
       if (level == "twoway") ln_screening_level4 = fit.x[2];
       const WallProximityLaw w = law_of(fit.x);
       report["levels"][level] = report_level(level, prepared, held, fit, w, o.friction_only);
-      WallProximityLaw& slot = level == "local" ? fitted.local : level == "nonlocal" ? fitted.nonlocal : fitted.twoway;
+      WallProximityLaw& slot = level == "local" ? fitted.local : level == "twoway" ? fitted.twoway : fitted.nonlocal;
       slot = w;
       slot.beta_min = beta_min;
       slot.beta_max = beta_max;

@@ -17,6 +17,7 @@ One row per sphere, case (configuration and load) and mesh:
   fx, fy          force on the sphere over 3 pi mu d U
   dfx, dfy        finest mesh only: change from the next coarser mesh (nan without one)
   channel_L, channel_W, pore_R, pore_x [m]: wall and pore cases (0 otherwise)
+  role            the plan's role of the case (fit, or *_heldout: left out of every fit)
 Python 3 standard library only.
 """
 import argparse
@@ -28,7 +29,7 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 COLUMNS = ("case,geometry,beta,n,spacing,gap_over_d,row_angle_deg,bend_deg,load,drag_angle_deg,cells_per_diameter,"
-           "finest,d,mu,U,gap_height,channel_L,channel_W,pore_R,pore_x,sphere,x,y,z,fx,fy,dfx,dfy,source")
+           "finest,d,mu,U,gap_height,channel_L,channel_W,pore_R,pore_x,sphere,x,y,z,fx,fy,dfx,dfy,role,source")
 
 
 def case_key(spec):
@@ -54,9 +55,9 @@ def load_cases(outs):
     return cases
 
 
-def write_csv(cases, path):
+def write_csv(cases, path, campaigns):
     lines = ["# resolved cases beyond straight slit rows (calibration/tools/geometry_cases.py; rodIbFoam, "
-             "campaign 'geometry'); forces over 3 pi mu d U", COLUMNS]
+             "campaign %s); forces over 3 pi mu d U" % ", ".join(campaigns), COLUMNS]
     for (key, load), meshes in sorted(cases.items()):
         order = sorted(meshes)
         for k, n_d in enumerate(order):
@@ -83,7 +84,7 @@ def write_csv(cases, path):
                     "%.9g" % H, "%.9g" % ch.get("L", 0), "%.9g" % ch.get("W", 0), "%.9g" % pore.get("R", 0),
                     "%.9g" % pore.get("x", 0), sp["id"],
                     "%.9g" % sp["x"][0], "%.9g" % sp["x"][1], "%.9g" % sp["x"][2], "%.8g" % fx, "%.8g" % fy,
-                    "%.3g" % dfx, "%.3g" % dfy, r["source"])))
+                    "%.3g" % dfx, "%.3g" % dfy, s.get("role", "fit"), r["source"])))
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
     return len(lines) - 2
@@ -95,7 +96,7 @@ def main(argv=None):
     ap.add_argument("--csv", required=True)
     a = ap.parse_args(argv)
     cases = load_cases(a.out)
-    n = write_csv(cases, a.csv)
+    n = write_csv(cases, a.csv, ["'%s'" % os.path.basename(os.path.normpath(o)) for o in a.out])
     print("geometry_cases: %d cases (%d sphere rows) -> %s" % (len(cases), n, a.csv))
     return 0
 

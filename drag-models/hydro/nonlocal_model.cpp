@@ -5,6 +5,7 @@
 
 #include "hydro/brinkman_green.h"
 #include "hydro/dense_model_budget.h"
+#include "hydro/wall_images.h"
 
 #include <Eigen/Dense>
 
@@ -102,8 +103,16 @@ void turned(const Eigen::MatrixXd& m, double c, double s, Eigen::MatrixXd& out) 
 
 }  // namespace
 
-void NonlocalRodModel::solve_coupling(const RodGeometry& rod, Eigen::MatrixXd& obstruction,
-                                      Eigen::MatrixXd& driving) const {
+WallReflection wall_reflection_from_name(const std::string& name) {
+  if (name == "none") return WallReflection::none;
+  if (name == "images") return WallReflection::images;
+  if (name == "self_images") return WallReflection::self_images;
+  throw std::invalid_argument("nonlocal: wall reflection '" + name +
+                              "': accepted values are none, images, self_images");
+}
+
+void NonlocalRodModel::solve_coupling(const RodGeometry& rod, const ChannelGeometry* walls,
+                                      Eigen::MatrixXd& obstruction, Eigen::MatrixXd& driving) const {
   const int n = rod.size();
   const double zo = obstruction_friction_;
   // Coupling matrix I + zeta_o M of the in-plane components, M_ik = c G or,
@@ -135,6 +144,7 @@ void NonlocalRodModel::solve_coupling(const RodGeometry& rod, Eigen::MatrixXd& o
       coupling_driving.block<2, 2>(2 * k, 2 * i) += gd;
     }
   }
+  if (walls) add_wall_images(rod, *walls, coupling, coupling_driving);
   // R_o itself is an output (it enters the implicit step's matrix), so the
   // inverse is what is wanted here. I + zeta_o M is symmetric (G and the
   // near field are) and, R_o being a resistance, positive definite: the
@@ -147,6 +157,28 @@ void NonlocalRodModel::solve_coupling(const RodGeometry& rod, Eigen::MatrixXd& o
     scaled_inverse(coupling_driving, zo, driving);
   else
     driving.resize(0, 0);
+}
+
+void NonlocalRodModel::add_wall_images(const RodGeometry& rod, const ChannelGeometry& walls,
+                                       Eigen::MatrixXd& coupling, Eigen::MatrixXd& coupling_driving) const {
+  const int n = rod.size();
+  const double scale = obstruction_friction_ * kMidplaneFactor;
+  const double mu = parameters_.viscosity, H = parameters_.gap_height;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d xi = rod.positions[i].head<2>();
+    const int last = wall_reflection_ == WallReflection::self_images ? i + 1 : n;
+    for (int k = i; k < last; ++k) {
+      const Eigen::Vector2d xk = rod.positions[k].head<2>();
+      // reciprocal to round-off (wall_images.h): symmetrised
+      const Eigen::Matrix2d g = 0.5 * scale *
+                                (image_mobility(walls, xi, xk, mu, H) + image_mobility(walls, xk, xi, mu, H).transpose());
+      coupling.block<2, 2>(2 * i, 2 * k) += g;
+      if (k != i) coupling.block<2, 2>(2 * k, 2 * i) += g.transpose();
+      if (coupling_driving.size() == 0) continue;
+      coupling_driving.block<2, 2>(2 * i, 2 * k) += g;
+      if (k != i) coupling_driving.block<2, 2>(2 * k, 2 * i) += g.transpose();
+    }
+  }
 }
 
 void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out,
@@ -167,17 +199,18 @@ void NonlocalRodModel::evaluate_with(const RodGeometry& rod, const BackgroundFlo
   Eigen::MatrixXd solved_obstruction, solved_driving;
   const Eigen::MatrixXd* obstruction = &solved_obstruction;  // R_o in the plane, 2n x 2n
   const Eigen::MatrixXd* driving = &solved_driving;          // its held-load twin (empty: R_o)
+  const ChannelGeometry* walls = wall_reflection_ != WallReflection::none ? &flow.geometry() : nullptr;
   if (!state) {
-    solve_coupling(rod, solved_obstruction, solved_driving);
+    solve_coupling(rod, walls, solved_obstruction, solved_driving);
   } else {
     ++state->evaluations;
     NonlocalState::Rod& kept = state->rods[key];
     double c = 1.0, s = 0.0;
-    const bool reuse = static_cast<int>(kept.reference.size()) == n && n > 0 &&
+    const bool reuse = !walls && static_cast<int>(kept.reference.size()) == n && n > 0 &&
                        rigid_misfit(kept.reference, rod, c, s) <= kShapeTolerance * parameters_.sphere_diameter;
     if (!reuse) {
       ++state->solves;
-      solve_coupling(rod, kept.obstruction, kept.driving);
+      solve_coupling(rod, walls, kept.obstruction, kept.driving);
       kept.reference.resize(n);
       for (int i = 0; i < n; ++i) kept.reference[i] = rod.positions[i].head<2>();
       obstruction = &kept.obstruction;

@@ -24,6 +24,11 @@
 // load has its own near field (NearFieldAtBeta): F = c R_o^D u - (zeta_f +
 // R_o) v, R_o^D = zeta_o (I + c zeta_o G^D)^-1 with G^D blended with the
 // driving's parameters.
+//
+// Walls that span the gap (side walls, pore cylinders) reflect the
+// depth-averaged flow; with WallReflection::images M gains the images of
+// every sphere's force in them (hydro/wall_images.h): M_ik += c G_image(x_i,
+// x_k), the self-image included (i = k), symmetrised.
 #pragma once
 
 #include "hydro/local_models.h"
@@ -64,6 +69,13 @@ struct NonlocalState : ModelState {
 // obstruction friction zeta_o [N s/m].
 double depth_averaged_interaction_reach(double gap_height, double viscosity, double obstruction_friction,
                                         double tolerance);
+
+// How level 3 treats the walls that span the gap: `none` (free-space G),
+// `images` (hydro/wall_images.h) or `self_images` (each sphere's own image
+// only, the diagonal blocks: what a per-sphere level could carry).
+enum class WallReflection { none, images, self_images };
+// "none" | "images" | "self_images"; throws std::invalid_argument naming the accepted values.
+WallReflection wall_reflection_from_name(const std::string& name);
 
 class NonlocalRodModel : public LocalDragBase {
  public:
@@ -108,13 +120,24 @@ class NonlocalRodModel : public LocalDragBase {
   static constexpr double kInteractionTolerance = 1e-3;  // [-]
   double interaction_reach() const override;
 
+  // Selected at run time; with images the coupling is solved at every
+  // evaluation (it depends on where the rod is, not only on its shape).
+  void set_wall_reflection(WallReflection reflection) { wall_reflection_ = reflection; }
+  WallReflection wall_reflection() const { return wall_reflection_; }
+
   double film_friction() const { return film_friction_; }              // zeta_f [N s/m]
   double obstruction_friction() const { return obstruction_friction_; }  // zeta_o [N s/m]
 
  private:
   // zeta_o (I + zeta_o M)^-1 and, when the held load has its own near field,
   // zeta_o (I + zeta_o M^D)^-1 (else `driving` is left empty), 2n x 2n.
-  void solve_coupling(const RodGeometry& rod, Eigen::MatrixXd& obstruction, Eigen::MatrixXd& driving) const;
+  // walls: whose images enter M (nullptr: none).
+  void solve_coupling(const RodGeometry& rod, const ChannelGeometry* walls, Eigen::MatrixXd& obstruction,
+                      Eigen::MatrixXd& driving) const;
+  // M += the wall images (hydro/wall_images.h) in both coupling matrices
+  // (coupling_driving empty: the friction's only).
+  void add_wall_images(const RodGeometry& rod, const ChannelGeometry& walls, Eigen::MatrixXd& coupling,
+                       Eigen::MatrixXd& coupling_driving) const;
   bool own_driving() const;
   void evaluate_with(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, NonlocalState* state,
                      int key) const;
@@ -122,6 +145,7 @@ class NonlocalRodModel : public LocalDragBase {
   double film_friction_;
   double obstruction_friction_;
   NearFieldAtBeta near_field_;
+  WallReflection wall_reflection_ = WallReflection::none;
 };
 
 }  // namespace hsrod

@@ -1,0 +1,96 @@
+// Level 3 with the walls' images (hydro/wall_images.h, WallReflection::images)
+// and the near-wall law refitted on top of them
+// (calibration/data/wall_proximity_fit_images.json, hsrod_fit_wall_proximity
+// --levels twoway,nonlocal+images,nonlocal; not shipped) against the resolved
+// near-wall cases held out of that fit (calibration/campaign/plan_near_wall.json,
+// roles wall_heldout / pore_heldout: rows 1 d from a side wall or a pore cylinder;
+// calibration/data/resolved_near_wall_per_sphere.csv).
+// Tolerance: the 10 % on totals and per-sphere RMS. The resolved
+// reference's own uncertainty is below that: mesh 6 -> 8 changes the totals of
+// the 0.25 d rows by <= 1.6 % (4 % for the wall-normal friction of the row
+// along the wall) and the per-sphere loads by <= 3.8 % RMS, less at 1 d.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "scene_crosscheck.h"
+
+namespace {
+
+using hsrod::calib::SceneCase;
+
+const std::string kData = std::string(HSROD_TEST_DATA_DIR) + "/../../calibration/data/";
+
+hsrod::WallProximityLaw fitted_law(const std::string& level) {
+  std::ifstream in(kData + "wall_proximity_fit_images.json");
+  const nlohmann::json p = nlohmann::json::parse(in).at("levels").at(level).at("parameters");
+  hsrod::WallProximityLaw w;
+  w.active = true;
+  w.normal = p.at("normal");
+  w.along = p.at("along");
+  w.screening = p.at("screening");
+  w.normal_row_gain = p.at("normal_row_gain");
+  w.along_row_gain = p.at("along_row_gain");
+  w.normal_held = p.at("normal_held");
+  w.along_held = p.at("along_held");
+  w.squeeze = p.at("squeeze");
+  w.squeeze_held = p.at("squeeze_held");
+  return w;
+}
+
+struct Worst {
+  double total = 0.0, profile = 0.0;  // largest |component error| (>= 20 % of |F|), largest profile RMS [-]
+};
+
+// worst errors of level 3 (with or without images) plus its refitted law over the held-out cases of `role`
+Worst held_out_worst(const std::string& role, bool images) {
+  const auto table = hsrod::ConfinementTable::default_table();
+  hsrod::WallProximityCalibration wall = hsrod::WallProximityCalibration::off();
+  wall.nonlocal = fitted_law(images ? "nonlocal+images" : "nonlocal");
+  Worst w;
+  int cases = 0;
+  for (const SceneCase& c : hsrod::calib::read_scene_cases(kData + "resolved_near_wall_per_sphere.csv")) {
+    if (c.role != role) continue;
+    ++cases;
+    const auto m = hsrod::calib::scene_forces(images ? "nonlocal+images" : "nonlocal", c, table,
+                                              hsrod::NearFieldCalibration::built_in(), wall);
+    Eigen::Vector2d tm = Eigen::Vector2d::Zero(), tr = Eigen::Vector2d::Zero();
+    for (std::size_t i = 0; i < m.size(); ++i) {
+      tm += m[i];
+      tr += c.resolved[i];
+    }
+    for (int k = 0; k < 2; ++k)
+      if (std::abs(tr[k]) >= 0.2 * tr.norm()) w.total = std::max(w.total, std::abs(tm[k] / tr[k] - 1.0));
+    w.profile = std::max(w.profile, hsrod::calib::profile_rms(m, c.resolved));
+  }
+  EXPECT_GT(cases, 0) << role;
+  return w;
+}
+
+}  // namespace
+
+TEST(calibration_WallImages, LevelThreeWithImagesIsWithinTenPercentOfHeldOutRowsOneDiameterFromAWall) {
+  // 10 cases: rows along / across / at 45 deg, dragged and held, beta 0.3 and 0.15
+  const Worst w = held_out_worst("wall_heldout", true);
+  EXPECT_LT(w.total, 0.10);
+  EXPECT_LT(w.profile, 0.10);
+}
+
+TEST(calibration_WallImages, ImagesCutLevelThreeHeldOutErrorBesideAPoreByFortyPercent) {
+  // the refitted law alone (no images) leaves the pore rows ~21-25 % off; with the images ~12 %
+  const Worst with = held_out_worst("pore_heldout", true), without = held_out_worst("pore_heldout", false);
+  EXPECT_LT(with.total, 0.6 * without.total);
+  EXPECT_LT(with.profile, 0.6 * without.profile);
+}
+
+// Not met: the radial (a90) rows 1 d from the pore stay 11-12 % short with
+// images and law (calibration/validation/crosscheck_near_wall.md).
+TEST(calibration_WallImages, DISABLED_LevelThreeWithImagesIsWithinTenPercentOfHeldOutRowsBesideAPore) {
+  const Worst w = held_out_worst("pore_heldout", true);
+  EXPECT_LT(w.total, 0.10);
+  EXPECT_LT(w.profile, 0.10);
+}

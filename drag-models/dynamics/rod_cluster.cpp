@@ -43,6 +43,29 @@ std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::
   return clusters;
 }
 
+std::vector<std::pair<int, int>> touching_groups(const std::vector<const std::vector<Eigen::Vector3d>*>& positions,
+                                                 const std::vector<const std::vector<double>*>& radii) {
+  std::vector<Eigen::Vector3d> all;
+  std::vector<double> radius;
+  std::vector<int> group_of;
+  double largest_radius = 0.0;
+  for (std::size_t g = 0; g < positions.size(); ++g) {
+    all.insert(all.end(), positions[g]->begin(), positions[g]->end());
+    radius.insert(radius.end(), radii[g]->begin(), radii[g]->end());
+    group_of.insert(group_of.end(), positions[g]->size(), static_cast<int>(g));
+  }
+  for (double r : radius) largest_radius = std::max(largest_radius, r);
+  std::vector<std::pair<int, int>> touching;
+  if (positions.size() < 2) return touching;
+  for (const auto& [i, j] : nearby_sphere_pairs(all, 2.0 * largest_radius)) {
+    if (group_of[i] == group_of[j] || (all[i] - all[j]).norm() >= radius[i] + radius[j]) continue;
+    touching.emplace_back(std::min(group_of[i], group_of[j]), std::max(group_of[i], group_of[j]));
+  }
+  std::sort(touching.begin(), touching.end());
+  touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
+  return touching;
+}
+
 OverdampedRod merge_rods(const std::vector<OverdampedRod>& rods) {
   OverdampedRod all;
   bool velocities = true;

@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include <utility>
 #include <vector>
 
 namespace hsrod {
@@ -29,6 +30,15 @@ namespace hsrod {
 // chain of rods, each within reach of the next, links them. A rod alone is
 // a group of one. Found through a cell list over all spheres (O(N log N)).
 std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::Vector3d>>& rods, double reach);
+
+// Groups of spheres (e.g. the end positions of the rods or clusters of a
+// step, each group with its spheres' radii [m]) that touch another group:
+// pairs (a, b), a < b, ascending, with a sphere of a and one of b closer
+// than the sum of their radii. A step's contact set is that of its start;
+// groups stepped apart that touch at the step's end met within the step
+// and are stepped again together (contact detection within the step).
+std::vector<std::pair<int, int>> touching_groups(const std::vector<const std::vector<Eigen::Vector3d>*>& positions,
+                                                 const std::vector<const std::vector<double>*>& radii);
 
 // The rods as one OverdampedRod to step together: spheres rod after rod,
 // bonds re-indexed, rod_of_sphere set (k for the spheres of rods[k]).

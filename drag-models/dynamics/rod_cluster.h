@@ -31,14 +31,19 @@ namespace hsrod {
 // a group of one. Found through a cell list over all spheres (O(N log N)).
 std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::Vector3d>>& rods, double reach);
 
-// Groups of spheres (e.g. the end positions of the rods or clusters of a
-// step, each group with its spheres' radii [m]) that touch another group:
-// pairs (a, b), a < b, ascending, with a sphere of a and one of b closer
-// than the sum of their radii. A step's contact set is that of its start;
-// groups stepped apart that touch at the step's end met within the step
-// and are stepped again together (contact detection within the step).
-std::vector<std::pair<int, int>> touching_groups(const std::vector<const std::vector<Eigen::Vector3d>*>& positions,
-                                                 const std::vector<const std::vector<double>*>& radii);
+// Groups of spheres (the rods or clusters of a step: each group's sphere
+// centres at the step's start and end [m], and radii [m]) that meet within
+// the step: pairs (a, b), a < b, ascending, with a sphere of a and one of b
+// that come closer than the sum of their radii somewhere along their
+// straight paths from start to end (closest approach of the two segments,
+// so that a sphere carried through another within one step counts too).
+// A step's contact set is that of its start; groups stepped apart that
+// meet are to be stepped again together (contact detection within the
+// step). Candidates from a cell list of the start positions with reach
+// 2 r_max + 2 (largest displacement).
+std::vector<std::pair<int, int>> groups_meeting_in_step(const std::vector<const std::vector<Eigen::Vector3d>*>& starts,
+                                                        const std::vector<const std::vector<Eigen::Vector3d>*>& ends,
+                                                        const std::vector<const std::vector<double>*>& radii);
 
 // The rods as one OverdampedRod to step together: spheres rod after rod,
 // bonds re-indexed, rod_of_sphere set (k for the spheres of rods[k]).

@@ -136,9 +136,9 @@ class FixRodImplicit : public Fix, public PartnerIntegrator {
     double largest = 0.0, wall_force = 0.0, strain = 0.0, energy = 0.0, rod_contact_force = 0.0;
     int contacts = 0, substeps = 1, rod_contacts = 0;
   };
-  // A step taken and not yet scattered to the atoms: its end positions are
+  // A step taken and not yet scattered to the atoms: its spheres' paths are
   // first checked against the other rods' (contact detection within the
-  // step: rods stepped apart that touch at its end are stepped again
+  // step: rods stepped apart that meet within it are stepped again
   // together, from the same start).
   struct PendingStep {
     std::vector<int> molecules;  // the rod alone, or the cluster's rods
@@ -165,6 +165,8 @@ class FixRodImplicit : public Fix, public PartnerIntegrator {
                                          StepTotals &totals);
   void step_group(const RodGather &gather, const std::vector<int> &molecules, const hsrod::WallContactParameters &walls);
   bool merge_rods_meeting_in_step(const RodGather &gather, const hsrod::WallContactParameters &walls);
+  // A group whose step meets a rod held at a box face: held too, at its start.
+  void hold_at_held_rod(const RodGather &gather, const PendingStep &step, int held_rod);
   // One group's step into `step`; false when it was held at a box face (scattered already).
   bool step_cluster(const RodGather &gather, const std::vector<int> &molecules,
                     const hsrod::WallContactParameters &walls, PendingStep &step);

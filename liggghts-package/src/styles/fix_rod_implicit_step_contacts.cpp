@@ -4,10 +4,10 @@
    start (fix_rod_implicit_clusters.cpp); a rod that moves further than that
    (a step the accuracy guard cut into substeps, a rod accelerating into a
    pore) can meet a rod it was stepped apart from. Every step is therefore
-   taken first, its end positions checked, and groups whose spheres touch
-   at the end are merged and stepped again together from the same start
+   taken first, the spheres' paths from start to end checked, and groups
+   whose spheres come within contact along them are merged and stepped again together from the same start
    (the rods' contacts then enter the joint solve and the guard's substeps):
-   the trial step's end positions reveal the new contact set, as the
+   the trial step's displacements reveal the new contact set, as the
    predictor of an implicit DEM step does. Only then are the steps
    scattered to the atoms. Where no rod meets another, the steps and their
    scatter are those taken without this check, bit for bit.
@@ -15,11 +15,16 @@
 
 #include "fix_rod_implicit.h"
 
+#include "comm.h"
+#include "lmptype.h"
 #include "rod_gather.h"
+#include "update.h"
 
 #include "dynamics/rod_cluster.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <string>
 #include <numeric>
 #include <vector>
 
@@ -48,18 +53,55 @@ void FixRodImplicit::step_group(const RodGather &gather, const std::vector<int> 
   }
 }
 
-// One round: the groups that touch at their steps' end, joined
+// One round: the groups whose spheres' paths in their steps meet, joined
 // transitively, stepped again as one cluster each. False: none touched.
 bool FixRodImplicit::merge_rods_meeting_in_step(const RodGather &gather, const hsrod::WallContactParameters &walls) {
-  std::vector<const std::vector<Eigen::Vector3d> *> ends;
+  std::vector<const std::vector<Eigen::Vector3d> *> starts, ends;
   std::vector<const std::vector<double> *> radii;
   for (const PendingStep &p : pending_) {
-    const hsrod::OverdampedRod &rod = p.alone ? scratch_by_rod_[p.molecules.front()].rod : p.rod;
+    RodScratch *scratch = p.alone ? &scratch_by_rod_[p.molecules.front()] : nullptr;
+    const hsrod::OverdampedRod &rod = scratch ? scratch->rod : p.rod;
+    starts.push_back(scratch ? &scratch->before : &p.before);
     ends.push_back(&rod.positions);
     radii.push_back(&rod.radii);
   }
-  const auto touching = hsrod::touching_groups(ends, radii);
+  // Rods held at a box face are obstacles at rest (start = end).
+  std::vector<int> held(held_rods_.begin(), held_rods_.end());
+  std::vector<std::vector<Eigen::Vector3d>> held_positions;
+  std::vector<std::vector<double>> held_radii;
+  held_positions.reserve(held.size());
+  held_radii.reserve(held.size());
+  for (int molecule : held) {
+    held_positions.emplace_back();
+    held_radii.emplace_back();
+    for (const GatheredSphere &sphere : gather.rods.at(molecule)) {
+      held_positions.back().push_back(sphere.position);
+      held_radii.back().push_back(sphere.radius);
+    }
+    starts.push_back(&held_positions.back());
+    ends.push_back(&held_positions.back());
+    radii.push_back(&held_radii.back());
+  }
+  const auto touching = hsrod::groups_meeting_in_step(starts, ends, radii);
   if (touching.empty()) return false;
+  // A group that meets a held rod has reached the pile at the box face: it
+  // is held too, where its step started (its outcome was decided upstream).
+  const int stepped = static_cast<int>(pending_.size());
+  std::vector<char> stopped(pending_.size(), 0);
+  bool any_stopped = false;
+  for (const auto &[a, b] : touching)
+    if (a < stepped && b >= stepped && !stopped[a]) {
+      stopped[a] = 1;
+      any_stopped = true;
+      hold_at_held_rod(gather, pending_[a], held[b - stepped]);
+    }
+  if (any_stopped) {
+    std::vector<PendingStep> moving;
+    for (int k = 0; k < stepped; ++k)
+      if (!stopped[k]) moving.push_back(std::move(pending_[k]));
+    pending_ = std::move(moving);
+    return true;  // the next round checks the others against the new pile
+  }
   std::vector<int> root(pending_.size());
   std::iota(root.begin(), root.end(), 0);
   const auto find = [&root](int a) {
@@ -67,6 +109,7 @@ bool FixRodImplicit::merge_rods_meeting_in_step(const RodGather &gather, const h
     return a;
   };
   for (const auto &[a, b] : touching) {
+    if (b >= stepped) continue;
     const int ra = find(a), rb = find(b);
     if (ra != rb) root[std::max(ra, rb)] = std::min(ra, rb);
   }
@@ -95,6 +138,27 @@ bool FixRodImplicit::merge_rods_meeting_in_step(const RodGather &gather, const h
     step_group(gather, molecules, walls);
   }
   return true;
+}
+
+void FixRodImplicit::hold_at_held_rod(const RodGather &gather, const PendingStep &step, int held_rod) {
+  if (step.alone)
+    stepped_rods_.erase(std::remove(stepped_rods_.begin(), stepped_rods_.end(), step.molecules.front()),
+                        stepped_rods_.end());
+  std::string name = "rod";
+  for (int molecule : step.molecules) {
+    hold_rod(gather.rods.at(molecule));
+    held_rods_.insert(molecule);
+    name += " " + std::to_string(molecule);
+  }
+  ++rods_met_in_step_;
+  if (comm->me != 0) return;
+  char msg[400];
+  std::snprintf(msg, sizeof(msg),
+                "fix rod/implicit: %s met rod %d, held at the box face, within step " BIGINT_FORMAT
+                ": held where the step started, from then on (measures stay there)\n",
+                name.c_str(), held_rod, update->ntimestep);
+  if (screen) fputs(msg, screen);
+  if (logfile) fputs(msg, logfile);
 }
 
 std::vector<std::vector<int>> FixRodImplicit::step_all(const RodGather &gather,

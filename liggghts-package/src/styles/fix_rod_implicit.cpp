@@ -258,7 +258,8 @@ void FixRodImplicit::post_run() {
   std::string line = "fix rod/implicit cost: " + cost_.report() + "\n";
   if (rods_met_in_step_ > 0)
     line += "fix rod/implicit: " + std::to_string(rods_met_in_step_) +
-            " time(s) rods stepped apart met within a step and were stepped again together\n";
+            " time(s) rods stepped apart met within a step: stepped again together, or held at a rod held "
+            "at the box face\n";
   if (screen) fputs(line.c_str(), screen);
   if (logfile) fputs(line.c_str(), logfile);
 }

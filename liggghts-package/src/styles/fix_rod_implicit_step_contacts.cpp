@@ -144,7 +144,7 @@ void FixRodImplicit::hold_at_held_rod(const RodGather &gather, const PendingStep
   if (step.alone)
     stepped_rods_.erase(std::remove(stepped_rods_.begin(), stepped_rods_.end(), step.molecules.front()),
                         stepped_rods_.end());
-  std::string name = "rod";
+  std::string name = step.molecules.size() > 1 ? "rods" : "rod";
   for (int molecule : step.molecules) {
     hold_rod(gather.rods.at(molecule));
     held_rods_.insert(molecule);

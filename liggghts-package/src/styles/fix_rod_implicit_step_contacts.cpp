@@ -83,10 +83,12 @@ bool FixRodImplicit::merge_rods_meeting_in_step(const RodGather &gather, const h
     radii.push_back(&held_radii.back());
   }
   const auto touching = hsrod::groups_meeting_in_step(starts, ends, radii);
-  if (touching.empty()) return false;
+  const int stepped = static_cast<int>(pending_.size());
+  // Held rods touching each other (the pile) are no business of the step.
+  if (std::none_of(touching.begin(), touching.end(), [stepped](const auto &t) { return t.first < stepped; }))
+    return false;
   // A group that meets a held rod has reached the pile at the box face: it
   // is held too, where its step started (its outcome was decided upstream).
-  const int stepped = static_cast<int>(pending_.size());
   std::vector<char> stopped(pending_.size(), 0);
   bool any_stopped = false;
   for (const auto &[a, b] : touching)

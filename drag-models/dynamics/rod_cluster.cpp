@@ -43,6 +43,39 @@ std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::
   return clusters;
 }
 
+std::vector<std::pair<int, int>> groups_meeting_in_step(const std::vector<const std::vector<Eigen::Vector3d>*>& starts,
+                                                        const std::vector<const std::vector<Eigen::Vector3d>*>& ends,
+                                                        const std::vector<const std::vector<double>*>& radii) {
+  std::vector<std::pair<int, int>> meeting;
+  if (starts.size() < 2) return meeting;
+  std::vector<Eigen::Vector3d> start, moved;
+  std::vector<double> radius;
+  std::vector<int> group_of;
+  double largest_radius = 0.0, largest_move = 0.0;
+  for (std::size_t g = 0; g < starts.size(); ++g) {
+    for (std::size_t k = 0; k < starts[g]->size(); ++k) {
+      start.push_back((*starts[g])[k]);
+      moved.push_back((*ends[g])[k] - (*starts[g])[k]);
+      radius.push_back((*radii[g])[k]);
+      group_of.push_back(static_cast<int>(g));
+      largest_radius = std::max(largest_radius, radius.back());
+      if (moved.back().allFinite()) largest_move = std::max(largest_move, moved.back().norm());
+    }
+  }
+  for (const auto& [i, j] : nearby_sphere_pairs(start, 2.0 * largest_radius + 2.0 * largest_move)) {
+    if (group_of[i] == group_of[j]) continue;
+    // Closest approach of x_i - x_j = d0 + s dd, s in [0, 1].
+    const Eigen::Vector3d d0 = start[i] - start[j], dd = moved[i] - moved[j];
+    const double dd2 = dd.squaredNorm();
+    const double s = dd2 > 0.0 ? std::clamp(-d0.dot(dd) / dd2, 0.0, 1.0) : 0.0;
+    if ((d0 + s * dd).norm() >= radius[i] + radius[j]) continue;
+    meeting.emplace_back(std::min(group_of[i], group_of[j]), std::max(group_of[i], group_of[j]));
+  }
+  std::sort(meeting.begin(), meeting.end());
+  meeting.erase(std::unique(meeting.begin(), meeting.end()), meeting.end());
+  return meeting;
+}
+
 OverdampedRod merge_rods(const std::vector<OverdampedRod>& rods) {
   OverdampedRod all;
   bool velocities = true;

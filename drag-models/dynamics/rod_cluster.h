@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include <utility>
 #include <vector>
 
 namespace hsrod {
@@ -29,6 +30,20 @@ namespace hsrod {
 // chain of rods, each within reach of the next, links them. A rod alone is
 // a group of one. Found through a cell list over all spheres (O(N log N)).
 std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::Vector3d>>& rods, double reach);
+
+// Groups of spheres (the rods or clusters of a step: each group's sphere
+// centres at the step's start and end [m], and radii [m]) that meet within
+// the step: pairs (a, b), a < b, ascending, with a sphere of a and one of b
+// that come closer than the sum of their radii somewhere along their
+// straight paths from start to end (closest approach of the two segments,
+// so that a sphere carried through another within one step counts too).
+// A step's contact set is that of its start; groups stepped apart that
+// meet are to be stepped again together (contact detection within the
+// step). Candidates from a cell list of the start positions with reach
+// 2 r_max + 2 (largest displacement).
+std::vector<std::pair<int, int>> groups_meeting_in_step(const std::vector<const std::vector<Eigen::Vector3d>*>& starts,
+                                                        const std::vector<const std::vector<Eigen::Vector3d>*>& ends,
+                                                        const std::vector<const std::vector<double>*>& radii);
 
 // The rods as one OverdampedRod to step together: spheres rod after rod,
 // bonds re-indexed, rod_of_sphere set (k for the spheres of rods[k]).

@@ -1,7 +1,8 @@
 // Several rods in one scene through fix rod/implicit:
 // rods pressed together by opposite forces stop at the Hertz overlap of
 // the force (rod_contact hertz; Johnson 1985, eq. 4.22 for two equal
-// spheres), rods far apart move bit for bit as each alone, and rods that
+// spheres), rods far apart move bit for bit as each alone, a fast rod
+// stops on a resting one it meets within a step, and rods that
 // overlap without rod_contact are refused (bad-input test
 // rods_overlap_no_pair).
 #include "liggghts_session.h"
@@ -11,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -166,5 +168,55 @@ TEST(SeveralRods, ExplicitDragEvaluatesCoupledRodsTogether) {
     EXPECT_LT(leading / alone, 0.85) << model;
     EXPECT_LT(trailing / alone, 0.85) << model;
     EXPECT_GT(leading / alone, 0.6) << model;
+  }
+}
+
+// A fast rod driven at a resting one 4 d ahead, with a step in which the
+// fast rod alone would travel ~11 d (push F = 1e-8 N per sphere against a
+// drag ~3e-8 N s/m per sphere: ~0.3 m/s relative to the fluid, dt = 1e-4 s).
+// The rods are not within each other's reach at the step's start (rest
+// before it: reach 1.5 d), so the contact must be found within the step:
+// the trial steps' paths meet, and the rods are stepped again together.
+// Then (overdamped, equal local drag on both rods) the resting rod is
+// carried by the contact alone: each sphere pair carries F / 2 once both
+// move together, and never more than the push F on the driven sphere, so
+// no pair overlaps more than the Hertz overlap of a load F (Johnson 1985,
+// eq. 4.22), and the rods' summed contact force is 10 F / 2.
+TEST(SeveralRods, AFastRodStopsOnARestingOneWithinTheStep) {
+  constexpr double push = 1e-8;  // [N] per sphere of the driven rod
+  hsrod_test::LiggghtsSession s;
+  s.commands({"units si", "atom_style hybrid granular molecular", "atom_modify map array sort 0 0", "boundary f f f",
+              "newton off", "communicate single cutoff 1e-5 vel yes",
+              "region box block 0 600e-6 0 200e-6 0 20e-6 units box", "create_box 1 box",
+              "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 290e-6 100e-6 10e-6 angle 0",
+              "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 302e-6 100e-6 10e-6 angle 0",
+              "group a molecule 1", "fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3",
+              "fix drag all hele_shaw/drag mean_velocity 0.03 model local",
+              "fix push_a a addforce " + hsrod_test::num(push) + " 0 0",
+              "fix step all rod/implicit bonds bonds drag drag rod_contact hertz rod_friction 0.5", "timestep 1e-4"});
+  const double pair_modulus = 15e6 / (2.0 * (1.0 - 0.09));
+  const double hertz_at_push = std::pow(3.0 * push / (4.0 * pair_modulus * std::sqrt(0.25 * kD)), 2.0 / 3.0);
+  LAMMPS_NS::Fix *step = s.fix("step");
+  for (int n = 1; n <= 5; ++n) {
+    s.command("run 1");
+    const auto x = s.gather("x");
+    ASSERT_EQ(x.size(), 20u);
+    double smallest_gap = 1.0, centre_a = 0.0, centre_b = 0.0;
+    for (int i = 0; i < 10; i++) {
+      centre_a += x[i].x() / 10;
+      centre_b += x[10 + i].x() / 10;
+      for (int j = 10; j < 20; j++) smallest_gap = std::min(smallest_gap, (x[i] - x[j]).norm() - kD);
+    }
+    std::printf("step %d: rod centres %.4e %.4e m, smallest gap %.3e m (bound -%.3e m), contact force %.4e N\n", n,
+                centre_a, centre_b, smallest_gap, hertz_at_push, step->compute_vector(11));
+    EXPECT_GT(smallest_gap, -hertz_at_push) << "step " << n;
+    EXPECT_LT(centre_a, centre_b) << "the driven rod passed through the resting one at step " << n;
+    EXPECT_EQ(step->compute_vector(10), 2.0) << "step " << n;
+    // From the second step on both move together: force balance on the
+    // carried rod, its drag 10 zeta v = 10 F / 2 (the first step starts
+    // both from rest and carries the approach).
+    if (n >= 2) {
+      EXPECT_NEAR(step->compute_vector(11), 10 * push / 2, 2e-3 * 10 * push / 2) << "step " << n;
+    }
   }
 }

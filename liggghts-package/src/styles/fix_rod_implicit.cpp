@@ -178,6 +178,7 @@ void FixRodImplicit::setup(int) {
   const double stiffness_ratio = check_conditioning();
   census_ = RodCensus();
   substeps_taken_ = trials_rejected_ = 0;
+  rods_met_in_step_ = 0;
   cost_ = hsrod::StepCost();
   solver_statistics_at_setup_ = solver_statistics();
   if (reported_) return;
@@ -222,26 +223,12 @@ void FixRodImplicit::initial_integrate(int) {
   const hsrod::WallContactParameters walls = wall_contact_parameters();
   stepped_rods_.clear();
   // Rods that touch or interact hydrodynamically are stepped together
-  // (fix_rod_implicit_clusters.cpp, dynamics/rod_cluster.h); every proc
-  // holds every rod and finds the same clusters. A rod alone takes its own
-  // step (fix_rod_implicit_rod_step.cpp).
-  const std::vector<std::vector<int>> clusters = step_clusters(gather);
-  std::set<int> jointly;
-  for (const std::vector<int> &cluster : clusters)
-    if (cluster.size() > 1) jointly.insert(cluster.begin(), cluster.end());
+  // (fix_rod_implicit_clusters.cpp, dynamics/rod_cluster.h), and so are
+  // rods that meet within the step (fix_rod_implicit_step_contacts.cpp);
+  // every proc holds every rod and finds the same clusters. A rod alone
+  // takes its own step (fix_rod_implicit_rod_step.cpp).
   StepTotals totals;
-  for (const auto &entry : gather.rods) {
-    if (jointly.count(entry.first)) continue;
-    if (held_rods_.count(entry.first)) {
-      hold_rod(entry.second);
-      continue;
-    }
-    step_rod_alone(entry.first, entry.second, walls, totals);
-  }
-  joint_strain_ = joint_energy_ = 0.0;
-  for (const std::vector<int> &cluster : clusters)
-    if (cluster.size() > 1) step_cluster(gather, cluster, walls, totals);
-  retire_stale_clusters(clusters);
+  retire_stale_clusters(step_all(gather, walls, totals));
   ++cost_.steps;
   cost_.total_seconds += seconds_since(step_start);
   largest_displacement_ = totals.largest;
@@ -268,7 +255,11 @@ void FixRodImplicit::post_run() {
   if (cost_.steps == 0) return;
   cost_.solver = hsrod::difference(solver_statistics(), solver_statistics_at_setup_);
   if (comm->me != 0) return;
-  const std::string line = "fix rod/implicit cost: " + cost_.report() + "\n";
+  std::string line = "fix rod/implicit cost: " + cost_.report() + "\n";
+  if (rods_met_in_step_ > 0)
+    line += "fix rod/implicit: " + std::to_string(rods_met_in_step_) +
+            " time(s) rods stepped apart met within a step: stepped again together, or held at a rod held "
+            "at the box face\n";
   if (screen) fputs(line.c_str(), screen);
   if (logfile) fputs(line.c_str(), logfile);
 }

@@ -136,16 +136,45 @@ class FixRodImplicit : public Fix, public PartnerIntegrator {
     double largest = 0.0, wall_force = 0.0, strain = 0.0, energy = 0.0, rod_contact_force = 0.0;
     int contacts = 0, substeps = 1, rod_contacts = 0;
   };
+  // A step taken and not yet scattered to the atoms: its spheres' paths are
+  // first checked against the other rods' (contact detection within the
+  // step: rods stepped apart that meet within it are stepped again
+  // together, from the same start).
+  struct PendingStep {
+    std::vector<int> molecules;  // the rod alone, or the cluster's rods
+    StepTotals totals;           // its share of the step's totals
+    bool alone = true;           // the rod's scratch (scratch_by_rod_) holds the step; else the members below
+    std::vector<GatheredSphere> spheres;
+    hsrod::OverdampedRod rod;
+    std::vector<Eigen::Vector3d> before;  // positions at the step's start [m]
+    hsrod::OverdampedStepResult result;
+    hsrod::RodDrag drag;
+    double strain = 0.0, energy = 0.0;  // the cluster's bond state after the step [-], [J]
+  };
+  std::vector<PendingStep> pending_;
+  long rods_met_in_step_ = 0;  // run total of groups stepped again together (printed by post_run)
+  // Rounds of re-stepping rods that met within the step; a meeting left
+  // after them is caught by the interpenetration check at the next step.
+  static constexpr int kContactRounds = 4;
   // Groups of molecule IDs stepped together (each a rod alone, or a cluster
   // of rods within contact or hydrodynamic reach), the same on every proc.
   std::vector<std::vector<int>> step_clusters(const RodGather &gather) const;
-  void step_cluster(const RodGather &gather, const std::vector<int> &molecules,
-                    const hsrod::WallContactParameters &walls, StepTotals &totals);
+  // Every rod's step (clusters merged where rods meet within it), scattered
+  // to the atoms; returns the groups finally stepped together.
+  std::vector<std::vector<int>> step_all(const RodGather &gather, const hsrod::WallContactParameters &walls,
+                                         StepTotals &totals);
+  void step_group(const RodGather &gather, const std::vector<int> &molecules, const hsrod::WallContactParameters &walls);
+  bool merge_rods_meeting_in_step(const RodGather &gather, const hsrod::WallContactParameters &walls);
+  // A group whose step meets a rod held at a box face: held too, at its start.
+  void hold_at_held_rod(const RodGather &gather, const PendingStep &step, int held_rod);
+  // One group's step into `step`; false when it was held at a box face (scattered already).
+  bool step_cluster(const RodGather &gather, const std::vector<int> &molecules,
+                    const hsrod::WallContactParameters &walls, PendingStep &step);
   void retire_stale_clusters(const std::vector<std::vector<int>> &clusters);
   // A rod alone (fix_rod_implicit_rod_step.cpp).
   hsrod::WallContactParameters wall_contact_parameters() const;
   void evaluate_rod_drag(int molecule, RodScratch &scratch);
-  void step_rod_alone(int molecule, const std::vector<GatheredSphere> &spheres,
+  bool step_rod_alone(int molecule, const std::vector<GatheredSphere> &spheres,
                       const hsrod::WallContactParameters &walls, StepTotals &totals);
   using Clock = std::chrono::steady_clock;
   static double seconds_since(Clock::time_point start);

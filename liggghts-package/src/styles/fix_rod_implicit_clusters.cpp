@@ -76,17 +76,17 @@ std::vector<std::vector<int>> FixRodImplicit::step_clusters(const RodGather &gat
   return clusters;
 }
 
-void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int> &molecules,
-                                  const hsrod::WallContactParameters &walls, StepTotals &totals) {
+bool FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int> &molecules,
+                                  const hsrod::WallContactParameters &walls, PendingStep &step) {
   hsrod::RodHydrodynamics &hydro = drag_->hydrodynamics();
   const int first = molecules.front();
-  if (held_rods_.count(first)) {
-    hold_rod(gather.rods.at(first));
-    return;
-  }
   const bool joint = molecules.size() > 1;
+  StepTotals &totals = step.totals;
+  step.molecules = molecules;
+  step.alone = false;
   // The cluster's spheres rod after rod, and which rod each belongs to.
-  std::vector<GatheredSphere> spheres;
+  std::vector<GatheredSphere> &spheres = step.spheres;
+  spheres.clear();
   std::vector<int> rod_of_sphere;
   for (std::size_t r = 0; r < molecules.size(); ++r) {
     const std::vector<GatheredSphere> &rod_spheres = gather.rods.at(molecules[r]);
@@ -95,7 +95,8 @@ void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
   }
   const int n = static_cast<int>(spheres.size());
   const double dt = update->dt;
-  hsrod::OverdampedRod rod = overdamped_rod(spheres, bonds_->bond_set());
+  step.rod = overdamped_rod(spheres, bonds_->bond_set());
+  hsrod::OverdampedRod &rod = step.rod;
   if (joint) rod.rod_of_sphere = rod_of_sphere;
   // Wall friction is linearised about the velocities of the last step
   // (this fix set them: v = dx/dt).
@@ -116,18 +117,19 @@ void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
     else hydro.loads(geometries.front(), out);
     cost_.drag_seconds += seconds_since(drag_start);
   };
-  hsrod::RodDrag drag;
+  hsrod::RodDrag &drag = step.drag;
   evaluate(rod.positions, drag);
   cost_.sphere_steps += n;
 
   std::string name = "rod " + std::to_string(first);
   for (std::size_t r = 1; r < molecules.size(); ++r) name += (r == 1 ? " (with rods " : ", ") + std::to_string(molecules[r]);
   if (joint) name += ", stepped together)";
-  const std::vector<Eigen::Vector3d> before = rod.positions;
+  step.before = rod.positions;
+  const std::vector<Eigen::Vector3d> &before = step.before;
   // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
   const hsrod::ChannelGeometry *scene_walls = walls_ ? &hydro.geometry() : nullptr;
   hsrod::OverdampedRodSolver &solver = joint ? solvers_by_cluster_[molecules] : solvers_by_rod_[first];
-  hsrod::OverdampedStepResult result;
+  hsrod::OverdampedStepResult &result = step.result;
   if (guard_) {
     // Accuracy guard: substeps (drag re-evaluated at each) or a refusal.
     auto drag_at = [&](const hsrod::OverdampedRod &moved, hsrod::RodDrag &out) { evaluate(moved.positions, out); };
@@ -136,7 +138,7 @@ void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
           hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_,
                                   joint ? guards_by_cluster_[molecules] : guards_by_rod_[first]);
       result = std::move(report.result);
-      account_guard_report(name, report, totals.substeps);
+      account_guard_report(name, report, step.totals.substeps);
     } catch (const std::exception &e) {
       char msg[896];
       std::snprintf(msg, sizeof(msg), "fix rod/implicit: %s at step " BIGINT_FORMAT ": %s", name.c_str(),
@@ -148,8 +150,8 @@ void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
   }
   // The cluster's bond state now (the merged rod is not kept for later).
   const auto strain_energy = hsrod::bond_strain_and_energy(rod);
-  joint_strain_ = std::max(joint_strain_, strain_energy.first);
-  joint_energy_ += strain_energy.second;
+  step.strain = strain_energy.first;
+  step.energy = strain_energy.second;
   // A step that would carry a sphere centre out of the box (the outlet,
   // or any non-periodic face) is taken only up to the face: the rod (with
   // the rods stepped with it) is held there, whole, instead of LIGGGHTS
@@ -159,7 +161,7 @@ void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
     held_rods_.insert(molecules.begin(), molecules.end());
     report_held_at_face(name, face);
     hold_rod_at_face(spheres, before, rod.positions);
-    return;
+    return false;
   }
   totals.largest = std::max(totals.largest, result.largest_displacement / geometries.front().sphere_diameter);
   totals.wall_force += result.wall_force;
@@ -184,8 +186,7 @@ void FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
     offset += size;
   }
   if (result.rod_contact) totals.rod_contacts += static_cast<int>(molecules.size());
-
-  scatter_rod(spheres, rod, before, result, drag);
+  return true;  // scattered by step_all once no other rod met it within the step
 }
 
 void FixRodImplicit::scatter_rod(const std::vector<GatheredSphere> &spheres, const hsrod::OverdampedRod &rod,

@@ -57,7 +57,7 @@ void FixRodImplicit::evaluate_rod_drag(int molecule, RodScratch &scratch) {
   cost_.sphere_steps += scratch.geometry.size();
 }
 
-void FixRodImplicit::step_rod_alone(int molecule, const std::vector<GatheredSphere> &spheres,
+bool FixRodImplicit::step_rod_alone(int molecule, const std::vector<GatheredSphere> &spheres,
                                     const hsrod::WallContactParameters &walls, StepTotals &totals) {
   hsrod::RodHydrodynamics &hydro = drag_->hydrodynamics();
   const int n = static_cast<int>(spheres.size());
@@ -112,7 +112,7 @@ void FixRodImplicit::step_rod_alone(int molecule, const std::vector<GatheredSphe
     held_rods_.insert(molecule);
     report_held_at_face("rod " + std::to_string(molecule), face);
     hold_rod_at_face(spheres, scratch.before, rod.positions);
-    return;
+    return false;
   }
   totals.largest = std::max(totals.largest, result.largest_displacement / scratch.geometry.sphere_diameter);
   totals.wall_force += result.wall_force;
@@ -122,5 +122,5 @@ void FixRodImplicit::step_rod_alone(int molecule, const std::vector<GatheredSphe
   record.ever_touched = record.ever_touched || result.wall_contact;
   record.wall_force = result.wall_force;
   record.largest_wall_force = std::max(record.largest_wall_force, result.wall_force);
-  scatter_rod(spheres, rod, scratch.before, result, scratch.drag);
+  return true;  // scattered by step_all once no other rod met it within the step
 }

@@ -240,3 +240,24 @@ TEST(RodContact, RodsThatDoNotTouchStepExactlyAsAlone) {
     EXPECT_EQ(both.positions[i], alone) << "sphere " << i;
   }
 }
+
+// Contact within a step: two spheres of radius d/2 whose straight paths
+// cross come within contact although neither end touches (a sphere carried
+// through another in one step); paths that pass 1.05 d apart, or groups
+// that touch only within themselves, do not meet. The closest approach of
+// the segments is exact geometry: d0 = (-3d, 0.9d) to (3d, 0.9d) against a
+// sphere at rest at the origin passes at 0.9 d < d, at 1.05 d > d.
+TEST(RodContact, GroupsMeetWhereTheirPathsComeWithinContactInTheStep) {
+  const std::vector<double> r1{0.5 * d}, r2{0.5 * d, 0.5 * d};
+  const std::vector<Eigen::Vector3d> at_rest{{0, 0, 0}}, pair{{20 * d, 0, 0}, {20.9 * d, 0, 0}};
+  for (const double offset : {0.9, 1.05}) {
+    const std::vector<Eigen::Vector3d> start{{-3 * d, offset * d, 0}}, end{{3 * d, offset * d, 0}};
+    const auto meeting = groups_meeting_in_step({&at_rest, &start, &pair}, {&at_rest, &end, &pair}, {&r1, &r1, &r2});
+    if (offset < 1.0) {
+      ASSERT_EQ(meeting.size(), 1u) << "paths " << offset << " d apart";
+      EXPECT_EQ(meeting[0], std::make_pair(0, 1));
+    } else {
+      EXPECT_TRUE(meeting.empty()) << "paths " << offset << " d apart";
+    }
+  }
+}

@@ -62,6 +62,19 @@ void FixHeleShawDrag::check_confinement_before_solve(const hsrod::SceneSpec &sce
                   0.5 * (scene.width - d));
     error->all(FLERR, msg);
   }
+  // Every gap of a pillar array (between pillars, and the >= G/2 left to
+  // the side walls) against the spheres, before the flow solve.
+  if (scene.pillars.radius > 0.0) {
+    const double gap = std::min(hsrod::narrowest_pillar_gap(scene.pillars), 0.5 * hsrod::pillar_gap(scene.pillars));
+    if (gap < d) {
+      std::snprintf(msg, sizeof(msg),
+                    "fix hele_shaw/drag: pillars leave gaps of %g m (between pillars: %g m, to the side walls: >= "
+                    "G/2 = %g m) narrower than the rod's spheres (d = %g m): spacing_x and spacing_y must leave "
+                    "every gap >= d", gap, hsrod::narrowest_pillar_gap(scene.pillars),
+                    0.5 * hsrod::pillar_gap(scene.pillars), d);
+      error->all(FLERR, msg);
+    }
+  }
   try {
     const hsrod::ConfinementTable table = model.coefficients_file.empty()
                                               ? hsrod::ConfinementTable::default_table()

@@ -63,8 +63,10 @@ void FixHeleShawDrag::check_confinement_before_solve(const hsrod::SceneSpec &sce
     error->all(FLERR, msg);
   }
   // Every gap of a pillar array (between pillars, and the >= G/2 left to
-  // the side walls) against the spheres, before the flow solve.
-  if (scene.pillars.radius > 0.0) {
+  // the side walls) against the spheres, before the flow solve; overlapping
+  // pillars are refused by the lattice itself (pillar_array), with its ranges.
+  const double diameter = 2.0 * scene.pillars.radius;
+  if (scene.pillars.radius > 0.0 && scene.pillars.spacing_x > diameter && scene.pillars.spacing_y > diameter) {
     const double gap = std::min(hsrod::narrowest_pillar_gap(scene.pillars), 0.5 * hsrod::pillar_gap(scene.pillars));
     if (gap < d) {
       std::snprintf(msg, sizeof(msg),

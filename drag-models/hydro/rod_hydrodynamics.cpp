@@ -2,6 +2,7 @@
 
 #include "flow/inflow.h"
 #include "flow/make_background_flow.h"
+#include "geometry/pillar_array.h"
 #include "geometry/pore_constriction.h"
 #include "hydro/explicit_drag_limit.h"
 
@@ -22,6 +23,9 @@ RodHydrodynamics::RodHydrodynamics(const SceneSpec& scene, const ModelSpec& mode
                                                         scene.pore_x, scene.origin.x(), scene.origin.y());
     for (const auto& c : pore.cylinders()) cylinders.push_back(c);
   }
+  if (scene.pillars.radius > 0.0)
+    for (const auto& c : pillar_array(scene.pillars, scene.length, scene.width, scene.origin.x(), scene.origin.y()))
+      cylinders.push_back(c);
   geometry_ = std::make_unique<ChannelGeometry>(scene.length, scene.width, scene.gap_height, scene.origin.x(),
                                                 scene.origin.y(), cylinders);
   Inflow inflow = Inflow::mean_velocity(1.0);

@@ -16,6 +16,7 @@
 #include "flow/brinkman_grid_solver.h"
 #include "flow/fluid_properties.h"
 #include "geometry/channel_geometry.h"
+#include "geometry/pillar_array.h"
 #include "hydro/auto_model_choice.h"
 #include "hydro/confinement_coefficients.h"
 #include "hydro/hydrodynamic_model.h"
@@ -36,6 +37,7 @@ struct SceneSpec {
   double pore_radius = -1.0;                           // pore constriction: cylinder radius R [m]; < 0: none
   double pore_x = 0.0;                                 // x of the pore's cylinders [m]
   std::vector<ZCylinder> cylinders;                    // other z-cylinder obstacles
+  PillarLattice pillars;                               // DLD pillar array (geometry/pillar_array.h); radius 0: none
   FluidProperties fluid;                               // mu [Pa s], rho_f [kg/m3]
   enum class InflowKind { mean_velocity, flow_rate, reynolds };
   InflowKind inflow_kind = InflowKind::mean_velocity;

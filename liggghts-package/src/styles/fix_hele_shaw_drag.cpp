@@ -83,6 +83,7 @@ FixHeleShawDrag::FixHeleShawDrag(LAMMPS *instance, int narg, char **arg)
     error->all(FLERR, msg);
   }
   report(("fix hele_shaw/drag: background flow: " + hydro_->flow().description() + "\n").c_str());
+  warn_pillar_resolution(scene);
 
   vector_flag = 1;
   size_vector = 4;  // total hydrodynamic force x y z on the group [N] (extensive), model level (intensive)

@@ -72,6 +72,7 @@ class FixHeleShawDrag : public Fix {
   // fix_hele_shaw_drag_checks.cpp: the scene and the spheres checked before any work.
   void check_confinement_before_solve(const hsrod::SceneSpec &scene, const hsrod::ModelSpec &model);
   void check_placement();
+  void warn_pillar_resolution(const hsrod::SceneSpec &scene);
   bool midplane_warned_ = false;  // rods off the gap mid-plane are warned about once
   std::unique_ptr<hsrod::RodHydrodynamics> hydro_;
   bool applied_by_integrator_;

@@ -16,6 +16,7 @@
 
 #include "rod_gather.h"
 
+#include "flow/grid_brinkman_flow.h"
 #include "hydro/rod_hydrodynamics.h"
 #include "rod_assembly.h"
 
@@ -29,6 +30,10 @@
 using namespace LAMMPS_NS;
 
 namespace {
+// Cells the grid should put across the narrowest pillar gap: half the
+// solver's 16 across the narrowest opening, which a single centred
+// cylinder's two gaps share.
+constexpr double kCellsAcrossPillarGap = 8.0;
 constexpr double kWallOverlapAllowed = 0.1;  // gap-wall overlap accepted at init [sphere radii]
 // Sphere centres farther than this from the gap's mid-plane are warned
 // about: the model holds for rods in the mid-plane [fraction of H].
@@ -61,6 +66,21 @@ void FixHeleShawDrag::check_confinement_before_solve(const hsrod::SceneSpec &sce
                   "(W - d)/2 = %g m", scene.width - 2.0 * scene.pore_radius, scene.pore_radius, scene.width, d,
                   0.5 * (scene.width - d));
     error->all(FLERR, msg);
+  }
+  // Every gap of a pillar array (between pillars, and the >= G/2 left to
+  // the side walls) against the spheres, before the flow solve; overlapping
+  // pillars are refused by the lattice itself (pillar_array), with its ranges.
+  const double diameter = 2.0 * scene.pillars.radius;
+  if (scene.pillars.radius > 0.0 && scene.pillars.spacing_x > diameter && scene.pillars.spacing_y > diameter) {
+    const double gap = std::min(hsrod::narrowest_pillar_gap(scene.pillars), 0.5 * hsrod::pillar_gap(scene.pillars));
+    if (gap < d) {
+      std::snprintf(msg, sizeof(msg),
+                    "fix hele_shaw/drag: pillars leave gaps of %g m (between pillars: %g m, to the side walls: >= "
+                    "G/2 = %g m) narrower than the rod's spheres (d = %g m): spacing_x and spacing_y must leave "
+                    "every gap >= d", gap, hsrod::narrowest_pillar_gap(scene.pillars),
+                    0.5 * hsrod::pillar_gap(scene.pillars), d);
+      error->all(FLERR, msg);
+    }
   }
   try {
     const hsrod::ConfinementTable table = model.coefficients_file.empty()
@@ -151,3 +171,22 @@ void FixHeleShawDrag::check_placement() {
   error->warning(FLERR, msg);
 }
 
+
+// The grid's cell size is set by the wall layer and by the narrowest total
+// opening of a cross-section (GridBrinkmanOptions), not by the gap between
+// two pillars: warn when a pillar gap gets fewer than 8 cells (thin gaps,
+// where the exponentially fitted wall layer lets the cells grow).
+void FixHeleShawDrag::warn_pillar_resolution(const hsrod::SceneSpec &scene) {
+  if (!(scene.pillars.radius > 0.0) || comm->me != 0) return;
+  const auto *grid = dynamic_cast<const hsrod::GridBrinkmanFlow *>(&hydro_->flow());
+  if (!grid) return;
+  const double gap = std::min(hsrod::narrowest_pillar_gap(scene.pillars), 0.5 * hsrod::pillar_gap(scene.pillars));
+  const double cell = std::max(grid->cell_size_x(), grid->cell_size_y());
+  if (gap / cell >= kCellsAcrossPillarGap) return;
+  char msg[512];
+  std::snprintf(msg, sizeof(msg),
+                "fix hele_shaw/drag: the background-flow grid resolves the narrowest pillar gap (%g m) by %.1f cells "
+                "of %g m, fewer than %g: the flow between the pillars is approximate (larger pillar spacings, or a "
+                "thicker gap, give more cells)", gap, gap / cell, cell, kCellsAcrossPillarGap);
+  error->warning(FLERR, msg);
+}

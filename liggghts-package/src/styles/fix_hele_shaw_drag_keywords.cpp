@@ -6,6 +6,8 @@
      origin x0 y0 z0     lower corner: inlet plane, side wall, lower gap wall [m] (default: box lo)
      pore R x            pore constriction: z-cylinders of radius R on both side walls at x [m]
      cylinder x y R      any other z-cylinder obstacle [m] (repeatable)
+     pillars R x0 x1 sx sy eps  tilted (DLD) pillar array: radius, x-range of the columns, column and
+                         pillar spacings [m], row shift eps = lateral shift per column / sy in [0, 1)
      viscosity mu        [Pa s], in [1e-6, 1e8] (default 1e-3)
      fluid_density rho   [kg/m3] (default 1000)
      mean_velocity U | flow_rate Q | reynolds Re    inflow (one required)
@@ -106,6 +108,15 @@ int scene_keyword(const Keyword &k, hsrod::SceneSpec &scene, bool &have_inflow) 
   } else if (k.is("cylinder")) {
     k.need(values = 3);
     scene.cylinders.push_back({k.number(1), k.number(2), k.number(3)});
+  } else if (k.is("pillars")) {
+    k.need(values = 6);
+    if (scene.pillars.radius > 0.0) k.error->all(FLERR, "fix hele_shaw/drag: pillars may be given only once");
+    scene.pillars.radius = k.positive("pillars radius R", k.number(1), " m");
+    scene.pillars.x_first = k.number(2);
+    scene.pillars.x_last = k.number(3);
+    scene.pillars.spacing_x = k.number(4);
+    scene.pillars.spacing_y = k.number(5);
+    scene.pillars.row_shift = k.number(6);
   } else if (k.is("viscosity")) {
     k.need(1);
     scene.fluid.dynamic_viscosity = viscosity_in_range(k.error, k.number(1));
@@ -233,7 +244,7 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
       char msg[512];
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix hele_shaw/drag command: unknown keyword '%s' (expected channel, origin, pore, "
-                    "cylinder, viscosity, fluid_density, mean_velocity, flow_rate, reynolds, model, tolerance, "
+                    "cylinder, pillars, viscosity, fluid_density, mean_velocity, flow_rate, reynolds, model, tolerance, "
                     "coefficients, section, inertia, timestep_check, placement_check, memory_limit, window_cells, "
                     "window_reflection_cells, window_margin, window_fine, window_grading, window_update, window_every)",
                     arg[iarg]);

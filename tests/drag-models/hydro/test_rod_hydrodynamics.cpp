@@ -4,6 +4,7 @@
 #include "hydro/rod_hydrodynamics.h"
 
 #include "hydro/auto_model_choice.h"
+#include "flow/grid_brinkman_flow.h"
 
 #include "common/math_constants.h"
 #include "rod_fixtures.h"
@@ -190,4 +191,39 @@ TEST(RodHydrodynamics, TwoWayWindowAboveItsCellLimitIsRefusedBeforeTheRun) {
     EXPECT_NE(m.find("above the limit of 100"), std::string::npos) << m;
     EXPECT_NE(m.find("window_cells"), std::string::npos) << m;
   }
+}
+
+// The scene's pillars keyword: the facade's planform holds exactly the
+// lattice's pillars (placed from the scene's origin), the flow is the grid
+// solve, and two arrays differing only in the row shift get different cache
+// files (the key lists every pillar).
+TEST(RodHydrodynamics, PillarArrayBecomesThePlanformAndItsOwnCacheFile) {
+  SceneSpec scene = straight_channel();
+  scene.length = 300e-6;
+  scene.width = 100e-6;
+  scene.origin = Eigen::Vector3d(1e-4, 2e-5, 0.0);
+  scene.pillars.radius = 10e-6;
+  scene.pillars.x_first = 1e-4 + 100e-6;
+  scene.pillars.x_last = 1e-4 + 180e-6;
+  scene.pillars.spacing_x = 40e-6;
+  scene.pillars.spacing_y = 40e-6;
+  scene.pillars.row_shift = 0.1;
+  const RodHydrodynamics hydro(scene, model_named("local"));
+  const auto expected = pillar_array(scene.pillars, scene.length, scene.width, 1e-4, 2e-5);
+  ASSERT_EQ(hydro.geometry().cylinders().size(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_DOUBLE_EQ(hydro.geometry().cylinders()[k].center_x, expected[k].center_x);
+    EXPECT_DOUBLE_EQ(hydro.geometry().cylinders()[k].center_y, expected[k].center_y);
+  }
+  const auto* grid = dynamic_cast<const GridBrinkmanFlow*>(&hydro.flow());
+  ASSERT_NE(grid, nullptr);
+  scene.pillars.row_shift = 0.2;
+  const RodHydrodynamics shifted(scene, model_named("local"));
+  const auto* shifted_grid = dynamic_cast<const GridBrinkmanFlow*>(&shifted.flow());
+  ASSERT_NE(shifted_grid, nullptr);
+  if (!grid->cache_file().empty()) {
+    EXPECT_NE(grid->cache_file(), shifted_grid->cache_file());
+  }
+  // A pillar's centre is inside a wall: no flow there.
+  EXPECT_EQ(hydro.flow().velocity(expected[0].center_x, expected[0].center_y).norm(), 0.0);
 }

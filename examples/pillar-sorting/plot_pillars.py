@@ -1,0 +1,106 @@
+#!/usr/bin/python3
+"""Lateral displacement per pillar column of each rod (in.pillars dumps).
+
+Reads pillars_s<N>.dump (id mol x y every 0.5 ms), tracks each rod's
+centre (mean of its spheres) and measures its lateral displacement per
+column: the y-change of the centre between entering the array (centre at
+x = 80 um, one column spacing before the first column) and leaving it
+(x = 540 um, two spacings after the last column at 460 um, where the
+centre has left the pillars' wakes), divided by the 10 columns
+crossed. Bumping (DLD displacement mode) would give eps * lambda_y = 4 um per
+column, zigzag 0. Writes pillar_sorting.png and prints one line per rod.
+Usage: plot_pillars.py [spheres ...] (default 3 6 12).
+"""
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+UM = 1e-6
+X_IN, X_OUT, COLUMNS = 80 * UM, 540 * UM, 10
+SHIFT_PER_COLUMN = 0.1 * 40 * UM  # eps * lambda_y [m]
+
+
+def read_dump(path):
+    """{mol: [(x, y) of the rod centre per frame]}"""
+    rods, lines = {}, open(path).read().split("\n")
+    i = 0
+    while i < len(lines):
+        if lines[i].startswith("ITEM: NUMBER OF ATOMS"):
+            n = int(lines[i + 1])
+            while not lines[i].startswith("ITEM: ATOMS"):
+                i += 1
+            frame = {}
+            for row in lines[i + 1:i + 1 + n]:
+                _, mol, x, y = row.split()[:4]
+                frame.setdefault(int(mol), []).append((float(x), float(y)))
+            for mol, pts in frame.items():
+                rods.setdefault(mol, []).append(np.mean(pts, axis=0))
+            i += n
+        i += 1
+    return {mol: np.array(track) for mol, track in rods.items()}
+
+
+def crossing_y(track, x):
+    """y of the centre when it first passes x (linear between frames), or None."""
+    beyond = np.nonzero(track[:, 0] >= x)[0]
+    if len(beyond) == 0 or beyond[0] == 0:
+        return None
+    k = beyond[0]
+    (x0, y0), (x1, y1) = track[k - 1], track[k]
+    return y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+
+
+def main():
+    lengths = [int(a) for a in sys.argv[1:]] or [3, 6, 12]
+    fig, (ax_tracks, ax_shift) = plt.subplots(1, 2, figsize=(11, 4.2))
+    colours = dict(zip(lengths, ["tab:blue", "tab:orange", "tab:green", "tab:red"]))
+    summary = []
+    for n in lengths:
+        rods = read_dump(f"pillars_s{n}.dump")
+        shifts = []
+        for mol, track in sorted(rods.items()):
+            ax_tracks.plot(track[:, 0] / UM, track[:, 1] / UM, color=colours[n], lw=1,
+                           label=f"{n} spheres ({3 * n} um)" if mol == min(rods) else None)
+            y_in, y_out = crossing_y(track, X_IN), crossing_y(track, X_OUT)
+            if y_in is None or y_out is None:
+                print(f"PILLARS spheres {n} rod {mol}: did not cross the array (x end {track[-1, 0] / UM:.0f} um)")
+                continue
+            shift = (y_out - y_in) / COLUMNS
+            shifts.append(shift)
+            print(f"PILLARS spheres {n} rod {mol}: y in {y_in / UM:.1f} um, out {y_out / UM:.1f} um, "
+                  f"{shift / UM:+.2f} um per column ({shift / SHIFT_PER_COLUMN:+.2f} eps lambda)")
+        if shifts:
+            summary.append((n, np.mean(shifts), np.min(shifts), np.max(shifts)))
+            print(f"PILLARS spheres {n}: mean {np.mean(shifts) / UM:+.2f} um per column over {len(shifts)} rods")
+    # The pillars (as laid out by fix hele_shaw/drag pillars 10e-6 100e-6 460e-6 40e-6 40e-6 0.1).
+    for i in range(COLUMNS):
+        s = (i * 0.1) % 1.0
+        for j in range(-3, 4):
+            y = 100 + (j + s) * 40
+            if 20 - 1e-9 <= y <= 180 + 1e-9:
+                ax_tracks.add_patch(plt.Circle((100 + 40 * i, y), 10, color="0.6"))
+    ax_tracks.set_xlim(0, 600)
+    ax_tracks.set_ylim(0, 200)
+    ax_tracks.set_aspect("equal")
+    ax_tracks.set_xlabel("x [um]")
+    ax_tracks.set_ylabel("y [um]")
+    ax_tracks.set_title("rod centres, pillars R = 10 um, eps = 0.1")
+    ax_tracks.legend(fontsize=7, loc="lower right")
+    for n, mean, lo, hi in summary:
+        ax_shift.errorbar([3 * n], [mean / UM], yerr=[[(mean - lo) / UM], [(hi - mean) / UM]], fmt="o",
+                          color=colours[n], capsize=4)
+    ax_shift.axhline(SHIFT_PER_COLUMN / UM, ls="--", color="k", lw=0.8, label="bump: eps lambda_y = 4 um")
+    ax_shift.axhline(0.0, ls=":", color="k", lw=0.8, label="zigzag: 0")
+    ax_shift.set_xlabel("rod length [um]")
+    ax_shift.set_ylabel("lateral displacement per column [um]")
+    ax_shift.set_title("mean (bars: range) over the rods")
+    ax_shift.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig("pillar_sorting.png", dpi=120)
+
+
+if __name__ == "__main__":
+    main()

@@ -18,6 +18,14 @@ std::unique_ptr<HydrodynamicModel> make_plain(const HydrodynamicParameters& p, c
   return std::make_unique<Model>(p, table);
 }
 
+std::unique_ptr<HydrodynamicModel> make_nonlocal(const HydrodynamicParameters& p, const ConfinementTable& table,
+                                                 const ModelOptions& options) {
+  auto model = std::make_unique<NonlocalRodModel>(p, table);
+  model->set_wall_reflection(options.wall_reflection);
+  if (options.wall_reflection == WallReflection::images) model->set_wall_proximity(wall_proximity_with_images());
+  return model;
+}
+
 std::unique_ptr<HydrodynamicModel> make_twoway(const HydrodynamicParameters& p, const ConfinementTable& table,
                                                const ModelOptions& options) {
   return std::make_unique<NearFieldTwoWayModel>(p, table, options.window);
@@ -31,7 +39,7 @@ const std::vector<ModelEntry>& registered_models() {
       {"local", 2, "local anisotropic rod: confined resistive-force theory along the tangent",
        make_plain<LocalRodModel>},
       {"nonlocal", 3, "non-local rod: spheres coupled through the depth-averaged Brinkman Green's function",
-       make_plain<NonlocalRodModel>},
+       make_nonlocal},
       {"twoway", 4, "two-way gap-averaged Brinkman: the rod as a moving obstacle in a window flow with walls",
        make_twoway},
   };
@@ -77,6 +85,14 @@ std::unique_ptr<HydrodynamicModel> make_hydrodynamic_model(const std::string& na
                                                            const HydrodynamicParameters& p,
                                                            const ConfinementTable& table,
                                                            const TwoWayWindowOptions& window) {
+  ModelOptions options;
+  options.window = window;
+  return make_hydrodynamic_model(name, p, table, options);
+}
+
+std::unique_ptr<HydrodynamicModel> make_hydrodynamic_model(const std::string& name,
+                                                           const HydrodynamicParameters& p,
+                                                           const ConfinementTable& table, const ModelOptions& options) {
   if (!(p.viscosity > 0.0)) throw std::invalid_argument("viscosity must be > 0 Pa s");
   if (!(p.gap_height > 0.0) || !(p.sphere_diameter > 0.0))
     throw std::invalid_argument("gap height and sphere diameter must be > 0 m");
@@ -86,8 +102,6 @@ std::unique_ptr<HydrodynamicModel> make_hydrodynamic_model(const std::string& na
   const ModelEntry* entry = find_model(name);
   if (!entry)
     throw std::invalid_argument("unknown hydrodynamic model '" + name + "' (expected " + valid_model_names() + ")");
-  ModelOptions options;
-  options.window = window;
   return entry->make(p, table, options);
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "hydro/hydrodynamic_model.h"
+#include "hydro/nonlocal_model.h"
 
 #include <functional>
 #include <memory>
@@ -21,6 +22,9 @@ namespace hsrod {
 // Settings a model may take beyond the physical parameters (each model reads its own part).
 struct ModelOptions {
   TwoWayWindowOptions window;  // level 4 (twoway)
+  // Level 3 (nonlocal): the walls' images in the coupling (hydro/wall_images.h);
+  // with images, the near-wall law fitted on top of them (wall_proximity_with_images).
+  WallReflection wall_reflection = WallReflection::none;
 };
 
 struct ModelEntry {
@@ -31,6 +35,12 @@ struct ModelEntry {
                                                    const ModelOptions&)>
       make;
 };
+
+// The model registered under `name` with its options (throws std::invalid_argument
+// as make_hydrodynamic_model does).
+std::unique_ptr<HydrodynamicModel> make_hydrodynamic_model(const std::string& name,
+                                                           const HydrodynamicParameters& parameters,
+                                                           const ConfinementTable& table, const ModelOptions& options);
 
 // All registered models, by increasing level.
 const std::vector<ModelEntry>& registered_models();

@@ -113,7 +113,7 @@ const ModelChoiceReport& RodHydrodynamics::choose_model(double d, const std::vec
       report.note = "auto: level 3 not estimated, level 2 chosen: " + too_large;
     }
   }
-  auto model = make_hydrodynamic_model(report.name, parameters, table, spec_.options.window);
+  auto model = make_hydrodynamic_model(report.name, parameters, table, spec_.options);
   const std::string too_large = first_resource_problem(*model, rods, *flow_, spec_.limits);
   if (!too_large.empty()) throw std::invalid_argument(too_large);
   model_ = std::move(model);

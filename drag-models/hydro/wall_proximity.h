@@ -91,6 +91,15 @@ struct WallProximityCalibration {
   const WallProximityLaw& for_level(int level) const;
 };
 
+// The level-3 law fitted on top of the walls' images (NonlocalRodModel with
+// WallReflection::images; hydro/wall_images.h): hsrod_fit_wall_proximity
+// --levels nonlocal+images on the geometry and near-wall campaigns, the 1 d
+// rows held out (calibration/data/wall_proximity_fit_images.json, which
+// hydro/wall_images_fit.cpp equals: calibration_WallImages.BuiltInLawIsTheFit).
+// Held out: within 7.7 % (totals) / 8.6 % (per-sphere RMS) 1 d from a side
+// wall, 11.7 % / 11.4 % 1 d from a pore cylinder.
+const WallProximityLaw& wall_proximity_with_images();
+
 // Shapes of the single-wall rises (3-D Stokes, see above) at surface gap
 // delta over the sphere radius a [-].
 double wall_normal_rise(double gap_over_radius);

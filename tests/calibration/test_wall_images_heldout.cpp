@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "hydro/model_registry.h"
 #include "scene_crosscheck.h"
 
 namespace {
@@ -93,4 +94,41 @@ TEST(calibration_WallImages, DISABLED_LevelThreeWithImagesIsWithinTenPercentOfHe
   const Worst w = held_out_worst("pore_heldout", true);
   EXPECT_LT(w.total, 0.10);
   EXPECT_LT(w.profile, 0.10);
+}
+
+// The law fix hele_shaw/drag applies with `wall_reflection images`
+// (hydro/wall_images_fit.cpp) is the fit these checks read.
+TEST(calibration_WallImages, BuiltInLawIsTheFit) {
+  const hsrod::WallProximityLaw fit = fitted_law("nonlocal+images"), built = hsrod::wall_proximity_with_images();
+  EXPECT_TRUE(built.active);
+  const double fitted[] = {fit.normal, fit.along, fit.screening, fit.normal_row_gain, fit.along_row_gain,
+                           fit.normal_held, fit.along_held, fit.squeeze, fit.squeeze_held};
+  const double shipped[] = {built.normal, built.along, built.screening, built.normal_row_gain, built.along_row_gain,
+                            built.normal_held, built.along_held, built.squeeze, built.squeeze_held};
+  for (int k = 0; k < hsrod::WallProximityLaw::kParameters; ++k) EXPECT_DOUBLE_EQ(shipped[k], fitted[k]) << k;
+}
+
+// ... and the model the fix builds (the registry's nonlocal with the images
+// option) gives the loads checked above, case by case.
+TEST(calibration_WallImages, RegisteredLevelThreeWithImagesIsTheCheckedModel) {
+  const auto table = hsrod::ConfinementTable::default_table();
+  hsrod::WallProximityCalibration wall = hsrod::WallProximityCalibration::off();
+  wall.nonlocal = fitted_law("nonlocal+images");
+  hsrod::ModelOptions options;
+  options.wall_reflection = hsrod::WallReflection::images;
+  int cases = 0;
+  for (const SceneCase& c : hsrod::calib::read_scene_cases(kData + "resolved_near_wall_per_sphere.csv")) {
+    if (c.role != "wall_heldout" && c.role != "pore_heldout") continue;
+    ++cases;
+    const auto checked = hsrod::calib::scene_forces("nonlocal+images", c, table,
+                                                    hsrod::NearFieldCalibration::built_in(), wall);
+    const auto model = hsrod::make_hydrodynamic_model("nonlocal", {c.mu, c.gap_height(), c.d}, table, options);
+    const hsrod::calib::SceneLoad load = hsrod::calib::scene_load(c);
+    hsrod::RodDrag drag;
+    model->evaluate(load.rod, *load.flow, drag);
+    const Eigen::VectorXd f = drag.forces(load.velocities) / load.force_scale;
+    for (std::size_t i = 0; i < checked.size(); ++i)
+      EXPECT_LT((f.segment<2>(3 * i) - checked[i]).norm(), 1e-12 * (1.0 + checked[i].norm())) << c.name << " " << c.load << " " << i;
+  }
+  EXPECT_GT(cases, 0);
 }

@@ -62,7 +62,8 @@ std::vector<std::pair<int, int>> groups_meeting_in_step(const std::vector<const 
       if (moved.back().allFinite()) largest_move = std::max(largest_move, moved.back().norm());
     }
   }
-  for (const auto& [i, j] : nearby_sphere_pairs(start, 2.0 * largest_radius + 2.0 * largest_move)) {
+  // unsorted candidates: the meeting groups are sorted and made unique below
+  for (const auto& [i, j] : nearby_sphere_pairs(start, 2.0 * largest_radius + 2.0 * largest_move, false)) {
     if (group_of[i] == group_of[j]) continue;
     // Closest approach of x_i - x_j = d0 + s dd, s in [0, 1].
     const Eigen::Vector3d d0 = start[i] - start[j], dd = moved[i] - moved[j];

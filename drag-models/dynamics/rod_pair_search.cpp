@@ -108,10 +108,11 @@ void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double rea
   if (sort_pairs) std::sort(pairs.begin(), pairs.end());
 }
 
-std::vector<std::pair<int, int>> nearby_sphere_pairs(const std::vector<Eigen::Vector3d>& positions, double reach) {
+std::vector<std::pair<int, int>> nearby_sphere_pairs(const std::vector<Eigen::Vector3d>& positions, double reach,
+                                                     bool sorted) {
   std::vector<PairSearchCell> cells;
   std::vector<std::pair<int, int>> pairs;
-  find_nearby_pairs(positions, reach, cells, pairs, true);
+  find_nearby_pairs(positions, reach, cells, pairs, sorted);
   return pairs;
 }
 

@@ -9,7 +9,9 @@
 // CASES.csv: calibration/data/resolved_geometry_per_sphere.csv
 // (calibration/tools/geometry_cases.py; the finest mesh of every case is
 // used). For every case, load and level (calibration/core/scene_crosscheck.h)
-// OUT.csv gets one row per quantity:
+// OUT.csv gets one row per quantity (level "nonlocal+images": level 3 with
+// the walls' images and the law fitted on top of them, as `fix hele_shaw/drag
+// ... wall_reflection images` ships it):
 //   F_x, F_y          total force over 3 pi mu d U (x along the wall and the
 //                     flow, y towards (-) / away from (+) the wall): resolved,
 //                     model, error (model - resolved) / |resolved| and
@@ -151,10 +153,14 @@ void crosscheck_level(const std::string& label, const std::string& level, const 
                       std::ostream& out, std::ofstream& record, std::ostream& cpp_rows, std::ostream* case_table) {
   Worst worst;
   Cells cells;
+  // Each level as users get it: level 3 with images carries the law fitted on
+  // top of them (what `wall_reflection images` ships), the others the built-in fit.
+  hsrod::WallProximityCalibration wall = hsrod::WallProximityCalibration::built_in();
+  if (level == "nonlocal+images") wall.nonlocal = hsrod::wall_proximity_with_images();
   for (const SceneCase& c : cases) {
     std::vector<Eigen::Vector2d> m;
     try {
-      m = scene_forces(level, c, table, near_field);
+      m = scene_forces(level, c, table, near_field, wall);
     } catch (const std::exception& e) {
       std::printf("%-9s %-26s %-8s: not evaluated: %s\n", level.c_str(), c.name.c_str(), c.load.c_str(), e.what());
       continue;

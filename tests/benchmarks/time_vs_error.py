@@ -49,9 +49,14 @@ Scenes and what each error is measured against:
     cost and error: the run's measured CPU time (resolved_run.json) and its
     numerical uncertainty, the change of each measure over the last halving
     of its CFD step (and of its mesh where a finer run is recorded:
-    resolved_uncertainty.json).
+    resolved_uncertainty.json). Level 3 with the walls' images
+    (wall_reflection images) is a row of its own ("3 + images").
 
-Usage: time_vs_error.py BUILD_DIR OUT.png [--runs 3] [--markdown OUT.md] [--skip-pore] [--skip-passage] [--skip-twoway]
+  Near wall (time_vs_error_near_wall.py): static loads 1 d from a side wall
+    and from a pore cylinder against the held-out resolved near-wall cases.
+
+Usage: time_vs_error.py BUILD_DIR OUT.png [--runs 3] [--markdown OUT.md] [--skip-pore] [--skip-passage]
+                        [--skip-near-wall] [--skip-twoway]
 Python 3 + matplotlib (Debian).
 """
 import argparse
@@ -64,6 +69,8 @@ import statistics
 import subprocess
 import sys
 import tempfile
+
+from time_vs_error_near_wall import near_wall
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -206,10 +213,12 @@ def coupled_passage(build, runs, levels):
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         env = dict(os.environ, HSROD_CACHE_DIR=os.path.join(tmp, "cache"))
-        for model, level in levels:
-            out = os.path.join(tmp, "%s.csv" % model)
+        # level 3 with the walls' images (wall_reflection images) beside the levels as shipped
+        variants = [(m, lv, "none") for m, lv in levels] + [("nonlocal", "3 + images", "images")]
+        for model, level, reflection in variants:
+            out = os.path.join(tmp, "%s_%s.csv" % (model, reflection))
             cmd = [os.path.join(build, "hsrod"), "-in", os.path.join(PASSAGE, "in.passage"), "-var", "model", model,
-                   "-var", "out", out, "-log", "none", "-screen", "none"]
+                   "-var", "reflection", reflection, "-var", "out", out, "-log", "none", "-screen", "none"]
             times = []
             for k in range(runs + 1):  # the first run solves and caches the background flow: not timed
                 c0 = child_cpu()
@@ -256,8 +265,9 @@ def plot(rows, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(7.5, 5))
-    marks = {"Hele-Shaw": "o", "pore": "s", "coupled passage": "^"}
-    colours = {1: "tab:blue", 2: "tab:orange", 3: "tab:green", 4: "tab:red", "resolved": "black", "stock": "grey"}
+    marks = {"Hele-Shaw": "o", "pore": "s", "coupled passage": "^", "near wall": "D"}
+    colours = {1: "tab:blue", 2: "tab:orange", 3: "tab:green", "3 + images": "tab:olive", 4: "tab:red",
+               "resolved": "black", "stock": "grey"}
     floor = 1e-4
     for r in rows:
         if not r["cpu_s"]:
@@ -268,7 +278,7 @@ def plot(rows, path):
             ax.text(r["cpu_s"], 0.6, " %s, %s scene" % (r["model"], r["scene"]), rotation=90, va="top", fontsize=7,
                     transform=ax.get_xaxis_transform())
             continue
-        label = ("level %s" % r["level"]) if isinstance(r["level"], int) else r["model"]
+        label = ("level %s" % r["level"]) if r["level"] not in ("resolved", "stock") else r["model"]
         ax.scatter(r["cpu_s"], max(e, floor) * 100, marker=marks[r["scene"]], color=colours[r["level"]], s=50,
                    label="%s, %s scene" % (label, r["scene"]))
     ax.set_xscale("log")
@@ -290,6 +300,7 @@ def main():
     ap.add_argument("--markdown")
     ap.add_argument("--skip-pore", action="store_true")
     ap.add_argument("--skip-passage", action="store_true")
+    ap.add_argument("--skip-near-wall", action="store_true")
     ap.add_argument("--skip-twoway", action="store_true", help="leave level 4 out (its pore passage takes minutes)")
     a = ap.parse_args()
     build = os.path.abspath(a.build)
@@ -299,6 +310,8 @@ def main():
         rows += pore(build, a.runs, levels)
     if not a.skip_passage:
         rows += coupled_passage(build, a.runs, levels)
+    if not a.skip_near_wall:
+        rows += near_wall(build, a.runs, a.skip_twoway)
     text = table(rows)
     print(text)
     plot(rows, a.png)

@@ -66,7 +66,7 @@ def main():
         log_path = os.path.join(work, "run30.txt")
         with open(log_path, "w") as f:
             f.write(log_high)
-        positions = os.path.join(work, "final_n30_seed1_s10_E15e6_angle0.txt")
+        positions = os.path.join(work, "final_n30_seed1_s10_E15e6_lattice_angle0.txt")
         bridge = subprocess.run([sys.executable, os.path.join(EXAMPLE, "bridge_analysis.py"), log_path, positions],
                                 capture_output=True, text=True).stdout
         print(bridge.strip())

@@ -14,3 +14,4 @@
 #include "fix_rod_bonds.h"
 #include "fix_rod_implicit.h"
 #include "fix_rod_outcome.h"
+#include "fix_rod_outflow.h"

@@ -1,0 +1,174 @@
+/* ----------------------------------------------------------------------
+   hsrod - fix rod/inflow (see fix_rod_inflow.h)
+
+   fix ID group rod/inflow drag ID spheres n diameter d type T density rho
+       region x0 x1 every N [count K] [seed S] [angle alpha|random]
+       [min_gap g] [spacing s] [bond_type B]
+------------------------------------------------------------------------- */
+
+#include "fix_rod_inflow.h"
+
+#include "create_rod.h"
+#include "fix_hele_shaw_drag.h"
+#include "fix_rod_bonds.h"
+#include "keyword_parsing.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "modify.h"
+#include "update.h"
+
+#include "geometry/rod_seeding.h"
+#include "hydro/rod_hydrodynamics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+constexpr const char *kStyle = "fix rod/inflow";
+// Attempt k of seed S draws from the sequence S * kSeedStride + k: the same
+// on every rank, distinct for 1e6 attempts per seed.
+constexpr std::uint64_t kSeedStride = 1000003;
+}  // namespace
+
+FixRodInflow::FixRodInflow(LAMMPS *instance, int narg, char **arg)
+    : Fix(instance, narg, arg), rods_per_insertion_(1), drag_(nullptr), rods_inserted_(0), rods_refused_(0),
+      attempts_(0), next_tag_(1), next_mol_(1), rest_states_pending_(false) {
+  nevery = 0;
+  bool have_region = false;
+  for (int iarg = 3; iarg < narg;) {
+    const char *key = arg[iarg];
+    if (std::strcmp(key, "every") == 0 || std::strcmp(key, "count") == 0) {
+      if (iarg + 1 >= narg) {
+        char msg[160];
+        std::snprintf(msg, sizeof(msg), "Illegal fix rod/inflow command: %s expects 1 value(s)", key);
+        error->all(FLERR, msg);
+      }
+      const int value = parse_integer(error, kStyle, key, arg[iarg + 1]);
+      if (value < 1) {
+        char msg[160];
+        std::snprintf(msg, sizeof(msg), "fix rod/inflow: %s must be an integer >= 1 (got %d)", key, value);
+        error->all(FLERR, msg);
+      }
+      (key[0] == 'e' ? nevery : rods_per_insertion_) = value;
+      iarg += 2;
+      continue;
+    }
+    if (std::strcmp(key, "layout") == 0)
+      error->all(FLERR, "fix rod/inflow: layout is not a keyword here (rods are placed at random in the band)");
+    if (std::strcmp(key, "region") == 0) have_region = true;
+    const int used = parse_seeded_rods_keyword(error, kStyle, narg, arg, iarg, spec_);
+    if (used == 0) {
+      char msg[256];
+      std::snprintf(msg, sizeof(msg),
+                    "Illegal fix rod/inflow command: unknown keyword '%s' (expected drag, spheres, diameter, type, "
+                    "density, region, every, count, seed, angle, min_gap, spacing, bond_type)", key);
+      error->all(FLERR, msg);
+    }
+    iarg += used;
+  }
+  check_seeded_rods_required(error, kStyle, spec_);
+  if (!have_region) error->all(FLERR, "Illegal fix rod/inflow command: missing required keyword region (x0 x1, m)");
+  if (nevery < 1) error->all(FLERR, "Illegal fix rod/inflow command: missing required keyword every (steps, >= 1)");
+  if (!(spec_.seeding.x_max > spec_.seeding.x_min)) {
+    char msg[200];
+    std::snprintf(msg, sizeof(msg), "fix rod/inflow: region x0 x1 must have x1 > x0 (got %g %g m)",
+                  spec_.seeding.x_min, spec_.seeding.x_max);
+    error->all(FLERR, msg);
+  }
+  drag_ = seeding_drag_fix(lmp, kStyle, spec_);
+  spec_.seeding.layout = hsrod::SeedingLayout::random;
+  spec_.seeding.rods = 1;
+  // The keywords' ranges and the band inside the planform, now: a trial
+  // placement in the empty planform throws invalid_argument for bad input.
+  try {
+    hsrod::seed_rods(drag_->hydrodynamics().geometry(), spec_.seeding);
+  } catch (const std::invalid_argument &e) {
+    error->all(FLERR, (std::string("fix rod/inflow: ") + e.what()).c_str());
+  } catch (const std::runtime_error &e) {
+    error->all(FLERR, (std::string("fix rod/inflow: no rod fits the empty band: ") + e.what()).c_str());
+  }
+  force_reneighbor = 1;  // rods are made in pre_exchange of a step that rebuilds the neighbour lists
+  next_reneighbor = -1;
+  vector_flag = 1;
+  size_vector = 2;  // [1] rods inserted, [2] attempts refused (no free place), since the fix was defined
+  extvector = 0;
+  global_freq = 1;
+}
+
+int FixRodInflow::setmask() { return PRE_EXCHANGE | PRE_NEIGHBOR; }
+
+void FixRodInflow::init() { drag_ = seeding_drag_fix(lmp, kStyle, spec_); }
+
+// The next insertion at the next multiple of `every`.
+void FixRodInflow::setup(int) { next_reneighbor = (update->ntimestep / nevery + 1) * nevery; }
+
+void FixRodInflow::pre_exchange() {
+  if (next_reneighbor != update->ntimestep) return;
+  next_reneighbor += nevery;
+  insert();
+}
+
+void FixRodInflow::insert() {
+  const hsrod::RodHydrodynamics &scene = drag_->hydrodynamics();
+  std::vector<hsrod::RodObstacle> obstacles = atoms_as_obstacles(lmp);
+  std::vector<hsrod::SeededRod> placed;
+  const double d = spec_.seeding.sphere_diameter;
+  const double half_length = 0.5 * (spec_.seeding.spheres - 1) * std::max(spec_.seeding.spacing, d);
+  for (int k = 0; k < rods_per_insertion_; k++) {
+    hsrod::RodSeedingRequest request = spec_.seeding;
+    request.seed = spec_.seeding.seed * kSeedStride + static_cast<std::uint64_t>(attempts_++);
+    try {
+      const hsrod::SeededRod rod = hsrod::seed_rods(scene.geometry(), request, obstacles).front();
+      const Eigen::Vector2d axis(std::sin(rod.angle), std::cos(rod.angle));
+      obstacles.push_back({rod.centre - half_length * axis, rod.centre + half_length * axis, d});
+      placed.push_back(rod);
+    } catch (const std::runtime_error &) {
+      rods_refused_++;  // no free place in the band now (the same on every rank)
+    }
+  }
+  if (placed.empty()) return;
+  CreateRod creator(lmp);
+  CreateRod::NextRodIds next = creator.next_ids();
+  next.tag = std::max(next.tag, next_tag_);
+  next.mol = std::max(next.mol, next_mol_);
+  const int first_tag = next.tag;
+  make_seeded_rods(creator, next, spec_, placed, scene.gap_bottom() + 0.5 * scene.geometry().gap_height());
+  // The special-list rebuild reports its neighbour counts at every call:
+  // once per insertion would fill the log, so it runs without screen and log.
+  FILE *const screen_kept = screen, *const logfile_kept = logfile;
+  screen = logfile = nullptr;
+  creator.finish();
+  screen = screen_kept;
+  logfile = logfile_kept;
+  next_tag_ = next.tag;
+  next_mol_ = next.mol;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->tag[i] >= first_tag) atom->mask[i] |= groupbit;
+  rods_inserted_ += static_cast<long>(placed.size());
+  rest_states_pending_ = true;
+}
+
+// The new rods' bonds take their current (straight) geometry as rest state,
+// as at a run's start: fix rod/bonds' set-up, once the new spheres are
+// ghosts where their partners need them (after the borders of this step).
+// Its forces are cleared before this step's forces are computed.
+void FixRodInflow::pre_neighbor() {
+  if (!rest_states_pending_) return;
+  rest_states_pending_ = false;
+  for (int f = 0; f < modify->nfix; f++)
+    if (auto *bonds = dynamic_cast<FixRodBonds *>(modify->fix[f])) bonds->setup(0);
+}
+
+double FixRodInflow::compute_vector(int n) {
+  return n == 0 ? static_cast<double>(rods_inserted_) : static_cast<double>(rods_refused_);
+}

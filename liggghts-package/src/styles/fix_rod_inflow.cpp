@@ -103,6 +103,7 @@ FixRodInflow::FixRodInflow(LAMMPS *instance, int narg, char **arg)
   size_vector = 2;  // [1] rods inserted, [2] attempts refused (no free place), since the fix was defined
   extvector = 0;
   global_freq = 1;
+  restart_global = 1;  // the counts, the attempts (the seeding sequence) and the next IDs
 }
 
 int FixRodInflow::setmask() { return PRE_EXCHANGE | PRE_NEIGHBOR; }
@@ -171,4 +172,24 @@ void FixRodInflow::pre_neighbor() {
 
 double FixRodInflow::compute_vector(int n) {
   return n == 0 ? static_cast<double>(rods_inserted_) : static_cast<double>(rods_refused_);
+}
+
+// Global restart data: [rods inserted, refused, attempts, next atom ID, next molecule ID].
+void FixRodInflow::write_restart(FILE *fp) {
+  if (comm->me != 0) return;
+  const double data[5] = {static_cast<double>(rods_inserted_), static_cast<double>(rods_refused_),
+                          static_cast<double>(attempts_), static_cast<double>(next_tag_),
+                          static_cast<double>(next_mol_)};
+  const int size = static_cast<int>(sizeof(data));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(data, sizeof(double), 5, fp);
+}
+
+void FixRodInflow::restart(char *buf) {
+  const double *data = reinterpret_cast<const double *>(buf);
+  rods_inserted_ = static_cast<long>(data[0]);
+  rods_refused_ = static_cast<long>(data[1]);
+  attempts_ = static_cast<long>(data[2]);
+  next_tag_ = static_cast<int>(data[3]);
+  next_mol_ = static_cast<int>(data[4]);
 }

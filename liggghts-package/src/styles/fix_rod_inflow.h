@@ -31,6 +31,8 @@ class FixRodInflow : public Fix {
   void pre_exchange();
   void pre_neighbor();
   double compute_vector(int);
+  void write_restart(FILE *);
+  void restart(char *);
 
  private:
   SeededRodsSpec spec_;             // the rods and the entrance band (spec_.seeding.x_min, x_max [m])

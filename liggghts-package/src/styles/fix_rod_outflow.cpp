@@ -82,6 +82,7 @@ FixRodOutflow::FixRodOutflow(LAMMPS *instance, int narg, char **arg)
   size_vector = 2;  // [1] rods removed, [2] spheres removed (since the fix was defined)
   extvector = 0;
   global_freq = 1;
+  restart_global = 1;  // the counts
 }
 
 int FixRodOutflow::setmask() { return PRE_EXCHANGE | END_OF_STEP; }
@@ -199,4 +200,19 @@ void FixRodOutflow::post_run() {
 
 double FixRodOutflow::compute_vector(int n) {
   return n == 0 ? static_cast<double>(rods_removed_) : static_cast<double>(spheres_removed_);
+}
+
+// Global restart data: [rods removed, spheres removed].
+void FixRodOutflow::write_restart(FILE *fp) {
+  if (comm->me != 0) return;
+  const double data[2] = {static_cast<double>(rods_removed_), static_cast<double>(spheres_removed_)};
+  const int size = static_cast<int>(sizeof(data));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(data, sizeof(double), 2, fp);
+}
+
+void FixRodOutflow::restart(char *buf) {
+  const double *data = reinterpret_cast<const double *>(buf);
+  rods_removed_ = static_cast<long>(data[0]);
+  spheres_removed_ = static_cast<long>(data[1]);
 }

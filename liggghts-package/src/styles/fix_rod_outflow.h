@@ -33,6 +33,8 @@ class FixRodOutflow : public Fix {
   void end_of_step();
   void post_run();
   double compute_vector(int);
+  void write_restart(FILE *);
+  void restart(char *);
 
  private:
   double outlet_x_;             // the removal plane x = x_out [m]

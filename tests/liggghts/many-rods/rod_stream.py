@@ -21,7 +21,13 @@ removal breaks:
  6. the run split by write_restart / read_restart after 600 steps gives the
     same counts and positions within 1e-10 d (the inflow's attempt counter,
     i.e. its random sequence, and its next IDs are in the restart file:
-    without them the second half would seed other rods).
+    without them the second half would seed other rods);
+ 7. concentration mode (2e9 rods/m^2 kept in the band): the target is
+    round(c W (x1 - x0)) = round(2e9 x 60e-6 x 35e-6) = 4 rods, the fix
+    reports 4 in the band after its last insertion, and the final positions
+    (one step after it) hold 4 rods with their centre in the band, give or
+    take the rods within one step's largest motion (0.25 d, the accuracy
+    guard's bound) of the band's downstream edge.
 Usage: rod_stream.py HSROD MPIRUN"""
 import os
 import subprocess
@@ -58,6 +64,7 @@ with tempfile.TemporaryDirectory() as work:
     restart = os.path.join(work, "half.restart")
     run(1, work, "first_half", steps // 2, ("-var", "phase", "1", "-var", "restart", restart))
     restarted = run(1, work, "second_half", steps // 2, ("-var", "phase", "2", "-var", "restart", restart))
+    by_concentration = run(1, work, "concentration", steps, ("-var", "concentration", "2e9"))
 
 failures = []
 counts, a = results[1]
@@ -100,6 +107,20 @@ else:
     print(f"restarted at step {steps // 2} vs unbroken: largest position difference {difference:.3e} d")
     if not difference <= 1e-10:
         failures.append("the restarted run differs beyond round-off")
+counts_c, e = by_concentration
+band_x1, target = 35e-6, round(2e9 * 60e-6 * 35e-6)
+centres = np.array([e[e[:, 1] == m, 2].mean() for m in np.unique(e[:, 1])])
+in_band = int(np.count_nonzero(centres <= band_x1))
+near_edge = int(np.count_nonzero(np.abs(centres - band_x1) <= 0.25 * d))
+print(f"concentration: target {counts_c['target']} (expected {target}), {counts_c['in_band']} in the band after the "
+      f"last insertion, {in_band} one step later ({near_edge} within 0.25 d of its edge); inserted "
+      f"{counts_c['inserted']}, refused {counts_c['refused']}, removed {counts_c['removed']}")
+if counts_c["target"] != target or counts_c["in_band"] != target:
+    failures.append("the concentration's rods in the band differ from round(c W (x1 - x0))")
+if abs(in_band - target) > near_edge:
+    failures.append("the final positions do not hold the concentration's rods in the band")
+if counts_c["seeded"] + counts_c["inserted"] != counts_c["removed"] + len(centres):
+    failures.append("concentration mode: rods seeded + inserted != rods removed + rods in the box")
 if failures:
     sys.exit("FAIL: " + "; ".join(failures))
 print("rod stream conserved, 1 vs 2 ranks match, restart continues")

@@ -18,7 +18,8 @@ Facts checked, each of which a wrong deletion breaks:
     create_rods_ranks.py: the same arithmetic on the same rods agrees to
     round-off (~1e-14 d at ~50 d from the origin), a step is ~0.05 d;
  4. A and B identical to the same 1e-10 d (every rank takes the same
-    removal decision from an all-rank reduction).
+    removal decision from an all-rank reduction; the two ranks split the
+    channel across y, so rods straddle them where they are removed).
 Usage: rod_outflow.py HSROD MPIRUN"""
 import os
 import subprocess
@@ -37,7 +38,7 @@ tolerance = 1e-10  # [d]
 
 def run(ranks, work, name, extra):
     out = os.path.join(work, name + ".txt")
-    cmd = [mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), hsrod,
+    cmd = [mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), hsrod, "-var", "py", str(ranks),
            "-in", os.path.join(here, "in.rod_outflow"), "-var", "nrods", str(nrods), "-var", "steps", "440",
            "-var", "dt", "5e-6", "-var", "out", out, "-log", "none", "-echo", "none"] + extra
     p = subprocess.run(cmd, cwd=work, capture_output=True, text=True)

@@ -16,7 +16,8 @@ removal breaks:
     states drift apart by several d in this shear flow);
  4. no rod in the box is entirely past x_out (they are removed), the stream
     flows (rods are both inserted and removed);
- 5. 1 and 2 ranks give the same rods at the same positions within 1e-10 d
+ 5. 1 and 2 ranks (split across y: rods straddle them where they are
+    inserted and removed) give the same rods at the same positions within 1e-10 d
     (create_rods_ranks.py: round-off ~1e-14 d, a step ~0.05 d);
  6. the run split by write_restart / read_restart after 600 steps gives the
     same counts and positions within 1e-10 d (the inflow's attempt counter,
@@ -45,7 +46,7 @@ spheres, seeded, every, steps = 10, 4, 40, 1200
 
 def run(ranks, work, name=None, run_steps=steps, extra=()):
     out = os.path.join(work, f"{name or f'stream{ranks}'}.txt")
-    cmd = [mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), hsrod,
+    cmd = [mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), hsrod, "-var", "py", str(ranks),
            "-in", os.path.join(here, "in.rod_stream"), "-var", "nrods", str(seeded), "-var", "every", str(every),
            "-var", "count", "1", "-var", "steps", str(run_steps), "-var", "thermo", str(steps), "-var", "out", out,
            "-log", "none", "-echo", "none", *extra]

@@ -231,6 +231,16 @@ double segment_distance(const Eigen::Vector2d& a0, const Eigen::Vector2d& a1, co
   return (a0 + s * d1 - (b0 + t * d2)).norm();
 }
 
+double region_fluid_area(const ChannelGeometry& planform, const RodSeedingRequest& request) {
+  return fluid_area(planform, region_of(planform, request));
+}
+
+int rods_at_concentration(const ChannelGeometry& planform, const RodSeedingRequest& request, double concentration) {
+  if (!(concentration >= 0.0) || !std::isfinite(concentration))
+    throw std::invalid_argument("concentration must be a finite number of rods per m^2, >= 0");
+  return static_cast<int>(std::lround(concentration * region_fluid_area(planform, request)));
+}
+
 double rod_area_fraction(const ChannelGeometry& planform, const RodSeedingRequest& request, int rods) {
   const double d = request.sphere_diameter;
   const double capsule = axis_length(request) * d + 0.25 * kPi * d * d;

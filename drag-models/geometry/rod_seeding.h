@@ -68,6 +68,14 @@ std::vector<SeededRod> seed_rods(const ChannelGeometry& planform, const RodSeedi
 // (capsule area (n - 1) s d + pi d^2 / 4 each) [-].
 double rod_area_fraction(const ChannelGeometry& planform, const RodSeedingRequest& request, int rods);
 
+// Fluid area of the request's region (side walls and cylinders excluded),
+// from a 512 x 512 sample of the planform [m^2].
+double region_fluid_area(const ChannelGeometry& planform, const RodSeedingRequest& request);
+
+// Rods that hold a number concentration c [rods/m^2] over the region's
+// fluid area: the nearest integer to c A [-] (c >= 0).
+int rods_at_concentration(const ChannelGeometry& planform, const RodSeedingRequest& request, double concentration);
+
 // Distance [m] between the segments [a0, a1] and [b0, b1] (2-D).
 double segment_distance(const Eigen::Vector2d& a0, const Eigen::Vector2d& a1, const Eigen::Vector2d& b0,
                         const Eigen::Vector2d& b1);

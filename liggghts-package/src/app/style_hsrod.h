@@ -13,4 +13,6 @@
 #include "fix_hele_shaw_field.h"
 #include "fix_rod_bonds.h"
 #include "fix_rod_implicit.h"
+#include "fix_rod_inflow.h"
 #include "fix_rod_outcome.h"
+#include "fix_rod_outflow.h"

@@ -38,85 +38,86 @@ using namespace LAMMPS_NS;
 
 CreateRods::CreateRods(LAMMPS *instance) : Pointers(instance) {}
 
-namespace {
+namespace LAMMPS_NS {
 
-constexpr const char *kStyle = "create_rods";
-
-struct CreateRodsArgs {
-  hsrod::RodSeedingRequest seeding;
-  std::string drag_id;
-  int type = 0;                  // atom type
-  double density = 0.0;          // [kg/m^3]
-  int bond_type = 1;
-  bool have_spheres = false, have_diameter = false, have_type = false, have_density = false;
-};
-
-void need_values(Error *error, int narg, int iarg, int count, const char *keyword) {
+int parse_seeded_rods_keyword(Error *error, const char *style, int narg, char **arg, int iarg, SeededRodsSpec &a) {
+  const char *key = arg[iarg];
+  static const char *known[] = {"drag", "spheres", "diameter", "type", "density", "layout", "seed",
+                                "angle", "region", "min_gap", "spacing", "bond_type"};
+  if (std::none_of(std::begin(known), std::end(known), [&](const char *k) { return std::strcmp(k, key) == 0; }))
+    return 0;
+  const int count = std::strcmp(key, "region") == 0 ? 2 : 1;
   if (iarg + count >= narg) {
     char msg[160];
-    std::snprintf(msg, sizeof(msg), "Illegal create_rods command: %s expects %d value(s)", keyword, count);
+    std::snprintf(msg, sizeof(msg), "Illegal %s command: %s expects %d value(s)", style, key, count);
     error->all(FLERR, msg);
   }
-}
-
-CreateRodsArgs parse(Error *error, int narg, char **arg) {
-  if (narg < 1) error->all(FLERR, "Illegal create_rods command: expects N (the number of rods, >= 1) first");
-  CreateRodsArgs a;
-  a.seeding.rods = parse_integer(error, kStyle, "N", arg[0]);
-  if (a.seeding.rods < 1) error->all(FLERR, "Illegal create_rods command: N (the number of rods) must be >= 1");
-  for (int iarg = 1; iarg < narg; iarg += 2) {
-    const char *key = arg[iarg];
-    need_values(error, narg, iarg, std::strcmp(key, "region") == 0 ? 2 : 1, key);
-    const char *v = arg[iarg + 1];
-    if (std::strcmp(key, "drag") == 0) {
-      a.drag_id = v;
-    } else if (std::strcmp(key, "spheres") == 0) {
-      a.seeding.spheres = parse_integer(error, kStyle, key, v);
-      a.have_spheres = true;
-    } else if (std::strcmp(key, "diameter") == 0) {
-      a.seeding.sphere_diameter = parse_number(error, kStyle, key, v);
-      a.have_diameter = true;
-    } else if (std::strcmp(key, "type") == 0) {
-      a.type = parse_integer(error, kStyle, key, v);
-      a.have_type = true;
-    } else if (std::strcmp(key, "density") == 0) {
-      a.density = parse_number(error, kStyle, key, v);
-      a.have_density = true;
-    } else if (std::strcmp(key, "layout") == 0) {
-      if (std::strcmp(v, "random") == 0) a.seeding.layout = hsrod::SeedingLayout::random;
-      else if (std::strcmp(v, "lattice") == 0) a.seeding.layout = hsrod::SeedingLayout::lattice;
-      else error->all(FLERR, "Illegal create_rods command: layout must be random or lattice");
-    } else if (std::strcmp(key, "seed") == 0) {
-      const int seed = parse_integer(error, kStyle, key, v);
-      if (seed < 1) error->all(FLERR, "Illegal create_rods command: seed must be an integer >= 1");
-      a.seeding.seed = static_cast<std::uint64_t>(seed);
-    } else if (std::strcmp(key, "angle") == 0) {
-      if (std::strcmp(v, "random") == 0) a.seeding.angle.reset();
-      else a.seeding.angle = parse_number(error, kStyle, key, v) * hsrod::kPi / 180.0;
-    } else if (std::strcmp(key, "region") == 0) {
-      a.seeding.x_min = parse_number(error, kStyle, key, v);
-      a.seeding.x_max = parse_number(error, kStyle, key, arg[iarg + 2]);
-      ++iarg;
-    } else if (std::strcmp(key, "min_gap") == 0) {
-      a.seeding.min_gap = parse_number(error, kStyle, key, v);
-    } else if (std::strcmp(key, "spacing") == 0) {
-      a.seeding.spacing = parse_number(error, kStyle, key, v);
-    } else if (std::strcmp(key, "bond_type") == 0) {
-      a.bond_type = parse_integer(error, kStyle, key, v);
-    } else {
-      char msg[160];
-      std::snprintf(msg, sizeof(msg), "Illegal create_rods command: unknown keyword '%s'", key);
+  const char *v = arg[iarg + 1];
+  char msg[200];
+  if (std::strcmp(key, "drag") == 0) {
+    a.drag_id = v;
+  } else if (std::strcmp(key, "spheres") == 0) {
+    a.seeding.spheres = parse_integer(error, style, key, v);
+    a.have_spheres = true;
+  } else if (std::strcmp(key, "diameter") == 0) {
+    a.seeding.sphere_diameter = parse_number(error, style, key, v);
+    a.have_diameter = true;
+  } else if (std::strcmp(key, "type") == 0) {
+    a.type = parse_integer(error, style, key, v);
+    a.have_type = true;
+  } else if (std::strcmp(key, "density") == 0) {
+    a.density = parse_number(error, style, key, v);
+    a.have_density = true;
+  } else if (std::strcmp(key, "layout") == 0) {
+    if (std::strcmp(v, "random") == 0) a.seeding.layout = hsrod::SeedingLayout::random;
+    else if (std::strcmp(v, "lattice") == 0) a.seeding.layout = hsrod::SeedingLayout::lattice;
+    else {
+      std::snprintf(msg, sizeof(msg), "Illegal %s command: layout must be random or lattice", style);
       error->all(FLERR, msg);
     }
+  } else if (std::strcmp(key, "seed") == 0) {
+    const int seed = parse_integer(error, style, key, v);
+    if (seed < 1) {
+      std::snprintf(msg, sizeof(msg), "Illegal %s command: seed must be an integer >= 1", style);
+      error->all(FLERR, msg);
+    }
+    a.seeding.seed = static_cast<std::uint64_t>(seed);
+  } else if (std::strcmp(key, "angle") == 0) {
+    if (std::strcmp(v, "random") == 0) a.seeding.angle.reset();
+    else a.seeding.angle = parse_number(error, style, key, v) * hsrod::kPi / 180.0;
+  } else if (std::strcmp(key, "region") == 0) {
+    a.seeding.x_min = parse_number(error, style, key, v);
+    a.seeding.x_max = parse_number(error, style, key, arg[iarg + 2]);
+  } else if (std::strcmp(key, "min_gap") == 0) {
+    a.seeding.min_gap = parse_number(error, style, key, v);
+  } else if (std::strcmp(key, "spacing") == 0) {
+    a.seeding.spacing = parse_number(error, style, key, v);
+  } else {
+    a.bond_type = parse_integer(error, style, key, v);
   }
-  if (a.drag_id.empty() || !a.have_spheres || !a.have_diameter || !a.have_type || !a.have_density)
-    error->all(FLERR, "Illegal create_rods command: drag, spheres, diameter, type and density are required");
-  return a;
+  return 1 + count;
 }
 
-// Every atom already in the box as a point obstacle of its own diameter
-// (gathered from all ranks): seeded rods keep clear of rods made before.
-std::vector<hsrod::RodObstacle> existing_atoms(LAMMPS *lmp) {
+void check_seeded_rods_required(Error *error, const char *style, const SeededRodsSpec &a) {
+  if (!a.drag_id.empty() && a.have_spheres && a.have_diameter && a.have_type && a.have_density) return;
+  char msg[200];
+  std::snprintf(msg, sizeof(msg), "Illegal %s command: drag, spheres, diameter, type and density are required", style);
+  error->all(FLERR, msg);
+}
+
+FixHeleShawDrag *seeding_drag_fix(LAMMPS *lmp, const char *style, const SeededRodsSpec &a) {
+  const int ifix = lmp->modify->find_fix(a.drag_id.c_str());
+  auto *drag = ifix < 0 ? nullptr : dynamic_cast<FixHeleShawDrag *>(lmp->modify->fix[ifix]);
+  if (!drag) {
+    const std::string msg =
+        std::string(style) + ": drag " + a.drag_id + " must be the ID of a fix hele_shaw/drag defined before";
+    lmp->error->all(FLERR, msg.c_str());
+  }
+  return drag;
+}
+
+// Seeded rods keep clear of rods made before.
+std::vector<hsrod::RodObstacle> atoms_as_obstacles(LAMMPS *lmp) {
   Atom *atom = lmp->atom;
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; ++i) mine.insert(mine.end(), {atom->x[i][0], atom->x[i][1], 2.0 * atom->radius[i]});
@@ -134,30 +135,10 @@ std::vector<hsrod::RodObstacle> existing_atoms(LAMMPS *lmp) {
   return out;
 }
 
-}  // namespace
-
-void CreateRods::command(int narg, char **arg) {
-  const CreateRodsArgs a = parse(error, narg, arg);
-  const int ifix = modify->find_fix(a.drag_id.c_str());
-  auto *drag = ifix < 0 ? nullptr : dynamic_cast<FixHeleShawDrag *>(modify->fix[ifix]);
-  if (!drag) {
-    const std::string msg = "create_rods: drag " + a.drag_id + " must be the ID of a fix hele_shaw/drag defined before";
-    error->all(FLERR, msg.c_str());
-  }
-  const hsrod::RodHydrodynamics &scene = drag->hydrodynamics();
-  std::vector<hsrod::SeededRod> rods;
-  try {
-    // The same seed on every rank gives the same rods everywhere.
-    rods = hsrod::seed_rods(scene.geometry(), a.seeding, existing_atoms(lmp));
-  } catch (const std::exception &e) {
-    const std::string msg = std::string("create_rods: ") + e.what();
-    error->all(FLERR, msg.c_str());
-  }
-  const double z = scene.gap_bottom() + 0.5 * scene.geometry().gap_height();
-  // Each rod as the create_rod command would read it (the same text, so the
-  // same numbers), without the map and special-list rebuild per rod.
-  CreateRod creator(lmp);
-  CreateRod::NextRodIds next = creator.next_ids();
+// Each rod as the create_rod command would read it (the same text, so the
+// same numbers), without the map and special-list rebuild per rod.
+void make_seeded_rods(CreateRod &creator, CreateRod::NextRodIds &next, const SeededRodsSpec &a,
+                      const std::vector<hsrod::SeededRod> &rods, double z) {
   for (const hsrod::SeededRod &rod : rods) {
     char line[512];
     std::snprintf(line, sizeof(line),
@@ -180,6 +161,49 @@ void CreateRods::command(int narg, char **arg) {
     for (std::string &w : words) args.push_back(&w[0]);
     creator.add(static_cast<int>(args.size()), args.data(), next, false);
   }
+}
+
+}  // namespace LAMMPS_NS
+
+namespace {
+
+constexpr const char *kStyle = "create_rods";
+
+SeededRodsSpec parse(Error *error, int narg, char **arg) {
+  if (narg < 1) error->all(FLERR, "Illegal create_rods command: expects N (the number of rods, >= 1) first");
+  SeededRodsSpec a;
+  a.seeding.rods = parse_integer(error, kStyle, "N", arg[0]);
+  if (a.seeding.rods < 1) error->all(FLERR, "Illegal create_rods command: N (the number of rods) must be >= 1");
+  for (int iarg = 1; iarg < narg;) {
+    const int used = parse_seeded_rods_keyword(error, kStyle, narg, arg, iarg, a);
+    if (used == 0) {
+      char msg[160];
+      std::snprintf(msg, sizeof(msg), "Illegal create_rods command: unknown keyword '%s'", arg[iarg]);
+      error->all(FLERR, msg);
+    }
+    iarg += used;
+  }
+  check_seeded_rods_required(error, kStyle, a);
+  return a;
+}
+
+}  // namespace
+
+void CreateRods::command(int narg, char **arg) {
+  const SeededRodsSpec a = parse(error, narg, arg);
+  const hsrod::RodHydrodynamics &scene = seeding_drag_fix(lmp, kStyle, a)->hydrodynamics();
+  std::vector<hsrod::SeededRod> rods;
+  try {
+    // The same seed on every rank gives the same rods everywhere.
+    rods = hsrod::seed_rods(scene.geometry(), a.seeding, atoms_as_obstacles(lmp));
+  } catch (const std::exception &e) {
+    const std::string msg = std::string("create_rods: ") + e.what();
+    error->all(FLERR, msg.c_str());
+  }
+  const double z = scene.gap_bottom() + 0.5 * scene.geometry().gap_height();
+  CreateRod creator(lmp);
+  CreateRod::NextRodIds next = creator.next_ids();
+  make_seeded_rods(creator, next, a, rods, z);
   creator.finish();
   if (comm->me == 0) {
     const double phi = hsrod::rod_area_fraction(scene.geometry(), a.seeding, static_cast<int>(rods.size()));

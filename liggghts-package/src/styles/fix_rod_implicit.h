@@ -20,6 +20,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 #include "implicit_partners.h"
 #include "rod_accounting.h"
 #include "rod_assembly.h"
+#include "rod_removal.h"
 
 #include "dynamics/guarded_step.h"
 #include "dynamics/overdamped_rod_step.h"
@@ -42,7 +43,7 @@ struct RodContactRecord {
   double largest_wall_force = 0.0;  // over the run [N]
 };
 
-class FixRodImplicit : public Fix, public PartnerIntegrator {
+class FixRodImplicit : public Fix, public PartnerIntegrator, public RodRemovalListener {
  public:
   // Contact history of rod (molecule) `mol`, or null if unknown.
   const RodContactRecord *contact_record(int mol) const {
@@ -54,6 +55,9 @@ class FixRodImplicit : public Fix, public PartnerIntegrator {
   // Whether this fix integrates the work of fix `fix_id` (its bonds or drag
   // fix); the partners ask at their init() (implicit_partners.h).
   bool names_partner(const char *fix_id) const override;
+  // Rods deleted whole (fix rod/outflow): their census entry, solvers,
+  // records and held state go (fix_rod_implicit_bookkeeping.cpp).
+  void forget_rods(const std::vector<int> &molecules) override;
   int setmask();
   void init();
   void setup(int);

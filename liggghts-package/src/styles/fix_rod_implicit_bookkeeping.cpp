@@ -94,6 +94,36 @@ void FixRodImplicit::check_whole_rods(const RodGather &gather) {
   }
 }
 
+void FixRodImplicit::forget_rods(const std::vector<int> &molecules) {
+  for (int mol : molecules) {
+    census_.forget(mol);
+    held_rods_.erase(mol);
+    contacts_by_rod_.erase(mol);
+    const auto solver = solvers_by_rod_.find(mol);
+    if (solver != solvers_by_rod_.end()) {
+      hsrod::accumulate(retired_statistics_, solver->second.statistics());  // the run's cost report keeps them
+      solvers_by_rod_.erase(solver);
+    }
+    guards_by_rod_.erase(mol);
+    scratch_by_rod_.erase(mol);
+    stepped_rods_.erase(std::remove(stepped_rods_.begin(), stepped_rods_.end(), mol), stepped_rods_.end());
+  }
+  // Joint solvers of clusters with a removed rod: retired as the next step
+  // would retire them (the cluster is not stepped again).
+  for (auto it = solvers_by_cluster_.begin(); it != solvers_by_cluster_.end();) {
+    const bool stale = std::any_of(it->first.begin(), it->first.end(), [&](int mol) {
+      return std::binary_search(molecules.begin(), molecules.end(), mol);
+    });
+    if (!stale) {
+      ++it;
+      continue;
+    }
+    hsrod::accumulate(retired_statistics_, it->second.statistics());
+    guards_by_cluster_.erase(it->first);
+    it = solvers_by_cluster_.erase(it);
+  }
+}
+
 // Largest |axial strain| and elastic energy of the rods' bonds after the
 // last step, evaluated when asked for (output steps), not every step.
 void FixRodImplicit::refresh_bond_state() {

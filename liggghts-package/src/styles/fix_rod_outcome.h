@@ -35,6 +35,7 @@ class FixRodOutcome : public Fix {
   void setup(int);
   void end_of_step();
   double compute_vector(int);
+  double pass_x() const { return criteria_.pass_x; }  // a rod has passed once its centre is past it [m]
 
  private:
   void sample();

@@ -34,6 +34,8 @@ class RodCensus {
   // whole in `rods`, else a description of the first one that is not
   // ("rod 3 has 7 of its 10 spheres" / "rod 3 (10 spheres) is gone").
   std::string check(const std::map<int, std::vector<GatheredSphere>> &rods);
+  // A rod removed whole (fix rod/outflow): no longer expected.
+  void forget(int molecule) { spheres_by_rod_.erase(molecule); }
 
  private:
   std::map<int, int> spheres_by_rod_;  // molecule ID -> spheres when first seen (or most since)

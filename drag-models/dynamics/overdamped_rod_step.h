@@ -217,7 +217,7 @@ inline bool sphere_pair_search_on(const OverdampedRod& rod, const WallContactPar
 // Pairs (i < j) of spheres of the rod whose centres are within `reach` [m]
 // of each other in x and in y (a superset of the touching pairs), in
 // lexicographic order (sorted false: in cell order), found through a cell
-// list: O(n log n), not O(n^2).
+// list: O(n), not O(n^2).
 std::vector<std::pair<int, int>> nearby_sphere_pairs(const std::vector<Eigen::Vector3d>& positions, double reach,
                                                      bool sorted = true);
 

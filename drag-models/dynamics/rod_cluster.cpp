@@ -24,7 +24,9 @@ std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::
         all.push_back(x);
         rod_of.push_back(r);
       }
-    for (const auto& [i, j] : nearby_sphere_pairs(all, reach)) {
+    // Pairs in cell order: the groups (connected components) do not depend
+    // on the order in which their links are found.
+    for (const auto& [i, j] : nearby_sphere_pairs(all, reach, false)) {
       if (rod_of[i] == rod_of[j] || (all[i] - all[j]).norm() > reach) continue;
       const int a = root_of(parent, rod_of[i]), b = root_of(parent, rod_of[j]);
       if (a != b) parent[std::max(a, b)] = std::min(a, b);

@@ -28,7 +28,7 @@ namespace hsrod {
 // by their first rod) whose spheres come within `reach` [m] of each other
 // (centre distance), joined transitively: rods a, b are in one group when a
 // chain of rods, each within reach of the next, links them. A rod alone is
-// a group of one. Found through a cell list over all spheres (O(N log N)).
+// a group of one. Found through a cell list over all spheres (O(N)).
 std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::Vector3d>>& rods, double reach);
 
 // Groups of spheres (the rods or clusters of a step: each group's sphere

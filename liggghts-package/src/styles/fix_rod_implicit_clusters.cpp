@@ -260,8 +260,15 @@ void FixRodImplicit::report_held_at_face(const std::string &who, int face) {
 // Joint workspaces of clusters that no longer exist are dropped (a cache:
 // a fresh one gives the same step), their statistics kept for the report.
 void FixRodImplicit::retire_stale_clusters(const std::vector<std::vector<int>> &clusters) {
+  // Only groups of several rods have a joint workspace: those, sorted, are
+  // searched (not every rod's group for every workspace).
+  std::vector<const std::vector<int> *> joint;
+  for (const std::vector<int> &cluster : clusters)
+    if (cluster.size() > 1) joint.push_back(&cluster);
+  const auto by_molecules = [](const std::vector<int> *a, const std::vector<int> *b) { return *a < *b; };
+  std::sort(joint.begin(), joint.end(), by_molecules);
   for (auto it = solvers_by_cluster_.begin(); it != solvers_by_cluster_.end();) {
-    if (std::find(clusters.begin(), clusters.end(), it->first) != clusters.end()) {
+    if (std::binary_search(joint.begin(), joint.end(), &it->first, by_molecules)) {
       ++it;
       continue;
     }

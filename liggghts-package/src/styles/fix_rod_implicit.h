@@ -30,6 +30,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 #include <memory>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -99,8 +100,6 @@ class FixRodImplicit : public Fix, public PartnerIntegrator {
   // between steps so a long rod is not re-analysed every step. Not in
   // restart files: a fresh workspace gives the same step (tested), while
   // the contact records above are written (write_restart).
-  std::map<int, hsrod::OverdampedRodSolver> solvers_by_rod_;
-  std::map<int, hsrod::GuardWorkspace> guards_by_rod_;  // the guard's scratch per rod (no state)
   // The step's structures per rod, rebuilt in place every step from the
   // gather (no allocation per step; no state: restarts need none).
   struct RodScratch {
@@ -112,7 +111,14 @@ class FixRodImplicit : public Fix, public PartnerIntegrator {
     hsrod::OverdampedStepResult result;   // unguarded step
     BondStiffnessCache stiffnesses;       // the bonds' stiffnesses while their inputs stay the same
   };
-  std::map<int, RodScratch> scratch_by_rod_;
+  // A rod's solver, its guard's scratch (no state) and step structures,
+  // found by one hashed lookup per step (not a search of a tree of all rods).
+  struct RodWork {
+    RodScratch scratch;
+    hsrod::OverdampedRodSolver solver;
+    hsrod::GuardWorkspace guard;
+  };
+  std::unordered_map<int, RodWork> work_by_rod_;
   // Cost model of the current run (printed by post_run): wall times of the
   // whole integrator and of the drag model, the solvers' split from their
   // statistics at setup and at the end (dynamics/step_cost_report.h).
@@ -143,7 +149,8 @@ class FixRodImplicit : public Fix, public PartnerIntegrator {
   struct PendingStep {
     std::vector<int> molecules;  // the rod alone, or the cluster's rods
     StepTotals totals;           // its share of the step's totals
-    bool alone = true;           // the rod's scratch (scratch_by_rod_) holds the step; else the members below
+    bool alone = true;           // the rod's scratch (below) holds the step; else the members below
+    RodScratch *scratch = nullptr;  // the rod's, when alone (work_by_rod_)
     std::vector<GatheredSphere> spheres;
     hsrod::OverdampedRod rod;
     std::vector<Eigen::Vector3d> before;  // positions at the step's start [m]

@@ -128,7 +128,7 @@ bool FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
   const std::vector<Eigen::Vector3d> &before = step.before;
   // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
   const hsrod::ChannelGeometry *scene_walls = walls_ ? &hydro.geometry() : nullptr;
-  hsrod::OverdampedRodSolver &solver = joint ? solvers_by_cluster_[molecules] : solvers_by_rod_[first];
+  hsrod::OverdampedRodSolver &solver = joint ? solvers_by_cluster_[molecules] : work_by_rod_[first].solver;
   hsrod::OverdampedStepResult &result = step.result;
   if (guard_) {
     // Accuracy guard: substeps (drag re-evaluated at each) or a refusal.
@@ -136,7 +136,7 @@ bool FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
     try {
       hsrod::GuardedStepReport report =
           hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_,
-                                  joint ? guards_by_cluster_[molecules] : guards_by_rod_[first]);
+                                  joint ? guards_by_cluster_[molecules] : work_by_rod_[first].guard);
       result = std::move(report.result);
       account_guard_report(name, report, step.totals.substeps);
     } catch (const std::exception &e) {

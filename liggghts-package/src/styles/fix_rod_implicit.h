@@ -166,6 +166,7 @@ class FixRodImplicit : public Fix, public PartnerIntegrator {
   // Groups of molecule IDs stepped together (each a rod alone, or a cluster
   // of rods within contact or hydrodynamic reach), the same on every proc.
   std::vector<std::vector<int>> step_clusters(const RodGather &gather) const;
+  mutable std::vector<std::vector<Eigen::Vector3d>> cluster_positions_;  // step_clusters' buffers [m]
   // Every rod's step (clusters merged where rods meet within it), scattered
   // to the atoms; returns the groups finally stepped together.
   std::vector<std::vector<int>> step_all(const RodGather &gather, const hsrod::WallContactParameters &walls,

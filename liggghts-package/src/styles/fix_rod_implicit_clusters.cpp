@@ -48,14 +48,18 @@ std::vector<std::vector<int>> FixRodImplicit::step_clusters(const RodGather &gat
       if (gather.rods.count(held)) clusters.push_back({held});
     return clusters;
   }
-  std::vector<std::vector<Eigen::Vector3d>> positions;
+  // The moving rods' positions, in the order of `molecules` (the gather's),
+  // into buffers kept between steps.
+  std::vector<std::vector<Eigen::Vector3d>> &positions = cluster_positions_;
+  positions.resize(molecules.size());
   double largest_radius = 0.0, fastest = 0.0;
-  for (int molecule : molecules) {
-    const std::vector<GatheredSphere> &spheres = gather.rods.at(molecule);
-    positions.emplace_back();
-    positions.back().reserve(spheres.size());
-    for (const GatheredSphere &s : spheres) {
-      positions.back().push_back(s.position);
+  std::size_t r = 0;
+  for (const auto &entry : gather.rods) {
+    if (r == molecules.size() || entry.first != molecules[r]) continue;  // held
+    std::vector<Eigen::Vector3d> &rod = positions[r++];
+    rod.clear();
+    for (const GatheredSphere &s : entry.second) {
+      rod.push_back(s.position);
       largest_radius = std::max(largest_radius, s.radius);
       fastest = std::max(fastest, s.velocity.norm());
     }

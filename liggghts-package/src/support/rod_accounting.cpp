@@ -11,9 +11,11 @@ namespace LAMMPS_NS {
 
 std::string RodCensus::check(const std::map<int, std::vector<GatheredSphere>> &rods) {
   char msg[160];
+  // Both maps are sorted by rod ID: walked side by side, O(rods).
+  auto found = rods.begin();
   for (const auto &known : spheres_by_rod_) {
-    const auto found = rods.find(known.first);
-    if (found == rods.end()) {
+    while (found != rods.end() && found->first < known.first) ++found;
+    if (found == rods.end() || found->first != known.first) {
       std::snprintf(msg, sizeof(msg), "rod %d (%d spheres) is gone", known.first, known.second);
       return msg;
     }
@@ -23,9 +25,11 @@ std::string RodCensus::check(const std::map<int, std::vector<GatheredSphere>> &r
       return msg;
     }
   }
+  auto known = spheres_by_rod_.begin();
   for (const auto &rod : rods) {
-    int &count = spheres_by_rod_[rod.first];
-    count = std::max(count, static_cast<int>(rod.second.size()));
+    while (known != spheres_by_rod_.end() && known->first < rod.first) ++known;
+    if (known == spheres_by_rod_.end() || known->first != rod.first) known = spheres_by_rod_.emplace_hint(known, rod.first, 0);
+    known->second = std::max(known->second, static_cast<int>(rod.second.size()));
   }
   return "";
 }

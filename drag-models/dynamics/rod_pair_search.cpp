@@ -39,25 +39,29 @@ void resort_cells(std::vector<PairSearchCell>& cells) {
 // cell, O(n + nx ny), stable, so the spheres of a cell stay ascending (the
 // order std::sort gives). A grid much larger than the spheres (spheres far
 // apart, a tiny reach) is sorted by comparison instead.
-void sort_cells(std::vector<PairSearchCell>& cells, double nx, double ny) {
+void sort_cells(PairSearchCells& search, double nx, double ny) {
+  std::vector<PairSearchCell>& cells = search.cells;
   const double grid = nx * ny;
   if (!(grid <= 4.0 * static_cast<double>(cells.size()) + 64.0)) {
     std::sort(cells.begin(), cells.end(), cell_order);
     return;
   }
   const std::int64_t rows = static_cast<std::int64_t>(ny);
-  std::vector<int> start(static_cast<std::size_t>(grid) + 1, 0);
+  std::vector<int>& start = search.cell_start;
+  start.assign(static_cast<std::size_t>(grid) + 1, 0);
   for (const PairSearchCell& c : cells) ++start[c.cx * rows + c.cy + 1];
   for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
-  std::vector<PairSearchCell> sorted(cells.size());
+  std::vector<PairSearchCell>& sorted = search.sorting;
+  sorted.resize(cells.size());
   for (const PairSearchCell& c : cells) sorted[start[c.cx * rows + c.cy]++] = c;
   cells.swap(sorted);
 }
 
 }  // namespace
 
-void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double reach,
-                       std::vector<PairSearchCell>& cells, std::vector<std::pair<int, int>>& pairs, bool sort_pairs) {
+void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double reach, PairSearchCells& search,
+                       std::vector<std::pair<int, int>>& pairs, bool sort_pairs) {
+  std::vector<PairSearchCell>& cells = search.cells;
   pairs.clear();
   const int n = static_cast<int>(positions.size());
   if (n < 2 || !(reach > 0.0)) {
@@ -108,7 +112,7 @@ void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double rea
     // A non-finite sphere has already spoilt the step; it has no neighbours.
     for (int i = 0; i < n; ++i)
       if (positions[i].allFinite()) cells.push_back(cell_of(i));
-    sort_cells(cells, std::floor((x_max - x_min) / reach) + 1.0, std::floor((y_max - y_min) / reach) + 1.0);
+    sort_cells(search, std::floor((x_max - x_min) / reach) + 1.0, std::floor((y_max - y_min) / reach) + 1.0);
   }
   // Cells (cx + dx, cy - 1 .. cy + 1) are contiguous in the sorted list,
   // and where that run starts only moves forward as c goes through the
@@ -134,7 +138,7 @@ void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double rea
 
 std::vector<std::pair<int, int>> nearby_sphere_pairs(const std::vector<Eigen::Vector3d>& positions, double reach,
                                                      bool sorted) {
-  std::vector<PairSearchCell> cells;
+  PairSearchCells cells;
   std::vector<std::pair<int, int>> pairs;
   find_nearby_pairs(positions, reach, cells, pairs, sorted);
   return pairs;

@@ -23,6 +23,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 
 #include "dynamics/guarded_step.h"
 #include "dynamics/overdamped_rod_step.h"
+#include "dynamics/rod_cluster.h"
 #include "dynamics/step_cost_report.h"
 
 #include <chrono>
@@ -167,6 +168,9 @@ class FixRodImplicit : public Fix, public PartnerIntegrator {
   // of rods within contact or hydrodynamic reach), the same on every proc.
   std::vector<std::vector<int>> step_clusters(const RodGather &gather) const;
   mutable std::vector<std::vector<Eigen::Vector3d>> cluster_positions_;  // step_clusters' buffers [m]
+  // The all-sphere searches' buffers: the clusters at the step's start and
+  // the meeting check (two lists: each is re-sorted from its last order).
+  mutable hsrod::RodSearchBuffers cluster_search_, meeting_search_;
   // Every rod's step (clusters merged where rods meet within it), scattered
   // to the atoms; returns the groups finally stepped together.
   std::vector<std::vector<int>> step_all(const RodGather &gather, const hsrod::WallContactParameters &walls,

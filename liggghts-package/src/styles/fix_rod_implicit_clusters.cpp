@@ -71,7 +71,7 @@ std::vector<std::vector<int>> FixRodImplicit::step_clusters(const RodGather &gat
     reach = 2.0 * largest_radius + 2.0 * std::max(2.0 * max_displacement_ * largest_radius, 2.0 * fastest * update->dt);
   if (rod_interaction_) reach = std::max(reach, drag_->hydrodynamics().interaction_reach());
   std::vector<std::vector<int>> clusters;
-  for (const std::vector<int> &members : hsrod::rod_clusters(positions, reach)) {
+  for (const std::vector<int> &members : hsrod::rod_clusters(positions, reach, cluster_search_)) {
     clusters.emplace_back();
     for (int k : members) clusters.back().push_back(molecules[k]);
   }

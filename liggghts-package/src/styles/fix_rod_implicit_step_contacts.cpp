@@ -83,7 +83,7 @@ bool FixRodImplicit::merge_rods_meeting_in_step(const RodGather &gather, const h
     ends.push_back(&held_positions.back());
     radii.push_back(&held_radii.back());
   }
-  const auto touching = hsrod::groups_meeting_in_step(starts, ends, radii);
+  const auto touching = hsrod::groups_meeting_in_step(starts, ends, radii, meeting_search_);
   const int stepped = static_cast<int>(pending_.size());
   // Held rods touching each other (the pile) are no business of the step.
   if (std::none_of(touching.begin(), touching.end(), [stepped](const auto &t) { return t.first < stepped; }))

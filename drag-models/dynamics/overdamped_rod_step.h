@@ -42,6 +42,7 @@
 #include <Eigen/Geometry>
 
 #include <memory>
+#include <cstdint>
 #include <vector>
 
 namespace hsrod {
@@ -214,10 +215,29 @@ inline bool sphere_pair_search_on(const OverdampedRod& rod, const WallContactPar
   return rod.size() > 1 && (walls.self_contact || (walls.rod_contact && !rod.rod_of_sphere.empty()));
 }
 
+// A sphere of the pair search in its cell of the plane (rod_pair_search.cpp).
+struct PairSearchCell {
+  std::int64_t cx, cy;
+  int sphere;
+};
+// The pair search's cell list, kept by a caller that searches every step:
+// `cells` in cell order from the previous call (re-sorted when the same
+// spheres come again), and the counting sort's buffers.
+struct PairSearchCells {
+  std::vector<PairSearchCell> cells, sorting;
+  std::vector<int> cell_start;
+};
+
+// nearby_sphere_pairs with its cell list and pairs in the caller's buffers
+// (kept by a solver: the cells of the previous call of the same rod are
+// re-sorted, not sorted anew). With sort_pairs false the pairs come in cell order.
+void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double reach, PairSearchCells& cells,
+                       std::vector<std::pair<int, int>>& pairs, bool sort_pairs);
+
 // Pairs (i < j) of spheres of the rod whose centres are within `reach` [m]
 // of each other in x and in y (a superset of the touching pairs), in
 // lexicographic order (sorted false: in cell order), found through a cell
-// list: O(n log n), not O(n^2).
+// list: O(n), not O(n^2).
 std::vector<std::pair<int, int>> nearby_sphere_pairs(const std::vector<Eigen::Vector3d>& positions, double reach,
                                                      bool sorted = true);
 

@@ -29,18 +29,6 @@ inline double seconds_between(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
 }
 
-// A sphere of the pair search in its cell of the plane (rod_pair_search.cpp).
-struct PairSearchCell {
-  std::int64_t cx, cy;
-  int sphere;
-};
-
-// nearby_sphere_pairs with its cell buffer passed in (kept by a solver:
-// `cells` from the previous call of the same rod are re-sorted, not sorted
-// anew). With sort_pairs false the pairs come in cell order.
-void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double reach,
-                       std::vector<PairSearchCell>& cells, std::vector<std::pair<int, int>>& pairs, bool sort_pairs);
-
 // A sphere touching the walls: its Hertz force and stiffness, and its wall
 // friction's secant resistance where it rubs.
 struct SphereWallContact {
@@ -117,7 +105,7 @@ struct OverdampedRodSolver::Workspace {
   std::vector<SphereWallContact> wall_contacts;
   std::vector<SpherePairContact> pair_contacts;
   std::vector<std::pair<int, int>> candidates;
-  std::vector<PairSearchCell> cells;
+  PairSearchCells cells;
   Eigen::VectorXd rhs, dy;  // loads [N, N m], then displacements [m, rad]
   Eigen::VectorXd velocities, hydrodynamic;  // 3n work vectors for the coupled drag
   Eigen::VectorXd load_law_scratch;           // RodDrag::forces' stacked v and R v

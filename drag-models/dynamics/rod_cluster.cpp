@@ -13,18 +13,29 @@ int root_of(std::vector<int>& parent, int a) {
 }  // namespace
 
 std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::Vector3d>>& rods, double reach) {
+  RodSearchBuffers buffers;
+  return rod_clusters(rods, reach, buffers);
+}
+
+std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::Vector3d>>& rods, double reach,
+                                           RodSearchBuffers& buffers) {
   const int m = static_cast<int>(rods.size());
   std::vector<int> parent(m);
   std::iota(parent.begin(), parent.end(), 0);
   if (m > 1 && reach > 0.0) {
-    std::vector<Eigen::Vector3d> all;
-    std::vector<int> rod_of;
+    std::vector<Eigen::Vector3d>& all = buffers.start;
+    std::vector<int>& rod_of = buffers.group_of;
+    all.clear();
+    rod_of.clear();
     for (int r = 0; r < m; ++r)
       for (const auto& x : rods[r]) {
         all.push_back(x);
         rod_of.push_back(r);
       }
-    for (const auto& [i, j] : nearby_sphere_pairs(all, reach)) {
+    // Pairs in cell order: the groups (connected components) do not depend
+    // on the order in which their links are found.
+    find_nearby_pairs(all, reach, buffers.cells, buffers.pairs, false);
+    for (const auto& [i, j] : buffers.pairs) {
       if (rod_of[i] == rod_of[j] || (all[i] - all[j]).norm() > reach) continue;
       const int a = root_of(parent, rod_of[i]), b = root_of(parent, rod_of[j]);
       if (a != b) parent[std::max(a, b)] = std::min(a, b);
@@ -46,11 +57,23 @@ std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::
 std::vector<std::pair<int, int>> groups_meeting_in_step(const std::vector<const std::vector<Eigen::Vector3d>*>& starts,
                                                         const std::vector<const std::vector<Eigen::Vector3d>*>& ends,
                                                         const std::vector<const std::vector<double>*>& radii) {
+  RodSearchBuffers buffers;
+  return groups_meeting_in_step(starts, ends, radii, buffers);
+}
+
+std::vector<std::pair<int, int>> groups_meeting_in_step(const std::vector<const std::vector<Eigen::Vector3d>*>& starts,
+                                                        const std::vector<const std::vector<Eigen::Vector3d>*>& ends,
+                                                        const std::vector<const std::vector<double>*>& radii,
+                                                        RodSearchBuffers& buffers) {
   std::vector<std::pair<int, int>> meeting;
   if (starts.size() < 2) return meeting;
-  std::vector<Eigen::Vector3d> start, moved;
-  std::vector<double> radius;
-  std::vector<int> group_of;
+  std::vector<Eigen::Vector3d>&start = buffers.start, &moved = buffers.moved;
+  std::vector<double>& radius = buffers.radius;
+  std::vector<int>& group_of = buffers.group_of;
+  start.clear();
+  moved.clear();
+  radius.clear();
+  group_of.clear();
   double largest_radius = 0.0, largest_move = 0.0;
   for (std::size_t g = 0; g < starts.size(); ++g) {
     for (std::size_t k = 0; k < starts[g]->size(); ++k) {
@@ -63,7 +86,8 @@ std::vector<std::pair<int, int>> groups_meeting_in_step(const std::vector<const 
     }
   }
   // unsorted candidates: the meeting groups are sorted and made unique below
-  for (const auto& [i, j] : nearby_sphere_pairs(start, 2.0 * largest_radius + 2.0 * largest_move, false)) {
+  find_nearby_pairs(start, 2.0 * largest_radius + 2.0 * largest_move, buffers.cells, buffers.pairs, false);
+  for (const auto& [i, j] : buffers.pairs) {
     if (group_of[i] == group_of[j]) continue;
     // Closest approach of x_i - x_j = d0 + s dd, s in [0, 1].
     const Eigen::Vector3d d0 = start[i] - start[j], dd = moved[i] - moved[j];

@@ -28,8 +28,21 @@ namespace hsrod {
 // by their first rod) whose spheres come within `reach` [m] of each other
 // (centre distance), joined transitively: rods a, b are in one group when a
 // chain of rods, each within reach of the next, links them. A rod alone is
-// a group of one. Found through a cell list over all spheres (O(N log N)).
+// a group of one. Found through a cell list over all spheres (O(N)).
 std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::Vector3d>>& rods, double reach);
+
+// The buffers of the two searches here, kept by a caller that searches
+// every step (no allocation of the all-sphere lists per step; the cell
+// list re-sorted from the last step's order).
+struct RodSearchBuffers {
+  std::vector<Eigen::Vector3d> start, moved;  // all spheres: centres, displacements [m]
+  std::vector<double> radius;                 // [m]
+  std::vector<int> group_of;
+  PairSearchCells cells;
+  std::vector<std::pair<int, int>> pairs;
+};
+std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::Vector3d>>& rods, double reach,
+                                           RodSearchBuffers& buffers);
 
 // Groups of spheres (the rods or clusters of a step: each group's sphere
 // centres at the step's start and end [m], and radii [m]) that meet within
@@ -44,6 +57,10 @@ std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::
 std::vector<std::pair<int, int>> groups_meeting_in_step(const std::vector<const std::vector<Eigen::Vector3d>*>& starts,
                                                         const std::vector<const std::vector<Eigen::Vector3d>*>& ends,
                                                         const std::vector<const std::vector<double>*>& radii);
+std::vector<std::pair<int, int>> groups_meeting_in_step(const std::vector<const std::vector<Eigen::Vector3d>*>& starts,
+                                                        const std::vector<const std::vector<Eigen::Vector3d>*>& ends,
+                                                        const std::vector<const std::vector<double>*>& radii,
+                                                        RodSearchBuffers& buffers);
 
 // The rods as one OverdampedRod to step together: spheres rod after rod,
 // bonds re-indexed, rod_of_sphere set (k for the spheres of rods[k]).

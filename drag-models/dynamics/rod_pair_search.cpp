@@ -34,10 +34,34 @@ void resort_cells(std::vector<PairSearchCell>& cells) {
   }
 }
 
+// Cells in cell_order, from spheres listed in ascending order in cells of
+// a grid of nx x ny (cx in [0, nx), cy in [0, ny)): a counting sort by
+// cell, O(n + nx ny), stable, so the spheres of a cell stay ascending (the
+// order std::sort gives). A grid much larger than the spheres (spheres far
+// apart, a tiny reach) is sorted by comparison instead.
+void sort_cells(PairSearchCells& search, double nx, double ny) {
+  std::vector<PairSearchCell>& cells = search.cells;
+  const double grid = nx * ny;
+  if (!(grid <= 4.0 * static_cast<double>(cells.size()) + 64.0)) {
+    std::sort(cells.begin(), cells.end(), cell_order);
+    return;
+  }
+  const std::int64_t rows = static_cast<std::int64_t>(ny);
+  std::vector<int>& start = search.cell_start;
+  start.assign(static_cast<std::size_t>(grid) + 1, 0);
+  for (const PairSearchCell& c : cells) ++start[c.cx * rows + c.cy + 1];
+  for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+  std::vector<PairSearchCell>& sorted = search.sorting;
+  sorted.resize(cells.size());
+  for (const PairSearchCell& c : cells) sorted[start[c.cx * rows + c.cy]++] = c;
+  cells.swap(sorted);
+}
+
 }  // namespace
 
-void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double reach,
-                       std::vector<PairSearchCell>& cells, std::vector<std::pair<int, int>>& pairs, bool sort_pairs) {
+void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double reach, PairSearchCells& search,
+                       std::vector<std::pair<int, int>>& pairs, bool sort_pairs) {
+  std::vector<PairSearchCell>& cells = search.cells;
   pairs.clear();
   const int n = static_cast<int>(positions.size());
   if (n < 2 || !(reach > 0.0)) {
@@ -61,8 +85,10 @@ void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double rea
   }
   // Cells of side `reach` in the plane: a pair within reach in x and y lies
   // in the same or a neighbouring cell. The gap holds only a few spheres
-  // across z, so cells stay nearly empty and the search is O(n log n).
+  // across z, so cells stay nearly empty and the search is O(n) (cells
+  // bucketed by a counting sort, or re-sorted from the last step's order).
   double x_min = std::numeric_limits<double>::infinity(), y_min = x_min;
+  double x_max = -x_min, y_max = -x_min;
   bool all_finite = true;
   for (const auto& p : positions) {
     if (!p.allFinite()) {
@@ -71,6 +97,8 @@ void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double rea
     }
     x_min = std::min(x_min, p.x());
     y_min = std::min(y_min, p.y());
+    x_max = std::max(x_max, p.x());
+    y_max = std::max(y_max, p.y());
   }
   const auto cell_of = [&](int i) {
     return PairSearchCell{static_cast<std::int64_t>(std::floor((positions[i].x() - x_min) / reach)),
@@ -84,7 +112,7 @@ void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double rea
     // A non-finite sphere has already spoilt the step; it has no neighbours.
     for (int i = 0; i < n; ++i)
       if (positions[i].allFinite()) cells.push_back(cell_of(i));
-    std::sort(cells.begin(), cells.end(), cell_order);
+    sort_cells(search, std::floor((x_max - x_min) / reach) + 1.0, std::floor((y_max - y_min) / reach) + 1.0);
   }
   // Cells (cx + dx, cy - 1 .. cy + 1) are contiguous in the sorted list,
   // and where that run starts only moves forward as c goes through the
@@ -110,7 +138,7 @@ void find_nearby_pairs(const std::vector<Eigen::Vector3d>& positions, double rea
 
 std::vector<std::pair<int, int>> nearby_sphere_pairs(const std::vector<Eigen::Vector3d>& positions, double reach,
                                                      bool sorted) {
-  std::vector<PairSearchCell> cells;
+  PairSearchCells cells;
   std::vector<std::pair<int, int>> pairs;
   find_nearby_pairs(positions, reach, cells, pairs, sorted);
   return pairs;

@@ -5,10 +5,15 @@
 # beta 0.15) against the number of rods, at the levels in MODELS, median of
 # REPEATS runs, on one core, with the 1-minute load after each count (the
 # machine may be shared: compare ratios within one run); and the same 100-rod run on 1 and 2 MPI ranks
-# (largest difference of the final sphere positions, relative to d).
+# (largest difference of the final sphere positions, relative to d); with
+# PORE_RODS set, that many rods through the paper's pore scene lengthened
+# upstream (tests/benchmarks/scripts/in.pore_many_rods), level 2, one core:
+# wall time (set-up and loop) beside the rods clogged and passed.
 # Usage: tests/benchmarks/bench_many_rods.sh [work-dir]   (after scripts/build.sh)
 # Environment: COUNTS (default "10 100 1000"), MODELS (default "local"),
-#              STEPS (default 100), REPEATS (default 3), HSROD_BUILD (build/).
+#              STEPS (default 100), REPEATS (default 3), HSROD_BUILD (build/),
+#              PORE_RODS (default: none, skip), PORE_UPSTREAM (default 1800e-6 m),
+#              PORE_TMAX (default 0.1 s: the run stops there if rods are left).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 build="${HSROD_BUILD:-$root/build}"
@@ -49,3 +54,14 @@ import numpy as np
 a, b = (np.loadtxt(f"final{r}.txt", skiprows=9) for r in (1, 2))
 print(f"1 vs 2 ranks, 100 rods, {len(a)} spheres: largest position difference {np.abs(a[:, 1:] - b[:, 1:]).max() / 3e-6:.2e} d")
 PY
+# Many rods through the pore scene: wall time beside the outcome counts.
+if [ -n "${PORE_RODS:-}" ]; then
+  start=$(date +%s.%N)
+  out=$("$build/hsrod" -in "$root/tests/benchmarks/scripts/in.pore_many_rods" -var nrods "$PORE_RODS" \
+        -var upstream "${PORE_UPSTREAM:-1800e-6}" -var t_max "${PORE_TMAX:-0.1}" -log none -echo none)
+  wall=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN {printf "%.1f", b - a}')
+  loop=$(printf "%s\n" "$out" | awk '/^Loop time of/ {t += $4; s += $9} END {printf "%.1f s over %d steps", t, s}')
+  printf "pore scene, %s rods, level 2, 1 core: wall %s s (loop %s), load %s\n" "$PORE_RODS" "$wall" "$loop" \
+    "$(cut -d' ' -f1 /proc/loadavg)"
+  printf "%s\n" "$out" | grep '^PORE'
+fi

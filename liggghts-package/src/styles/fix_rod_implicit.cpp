@@ -156,7 +156,7 @@ double FixRodImplicit::check_conditioning() {
 
 hsrod::OverdampedSolverStatistics FixRodImplicit::solver_statistics() const {
   hsrod::OverdampedSolverStatistics sum;
-  for (const auto &entry : solvers_by_rod_) hsrod::accumulate(sum, entry.second.statistics());
+  for (const auto &entry : work_by_rod_) hsrod::accumulate(sum, entry.second.solver.statistics());
   for (const auto &entry : solvers_by_cluster_) hsrod::accumulate(sum, entry.second.statistics());
   hsrod::accumulate(sum, retired_statistics_);
   return sum;

@@ -24,6 +24,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 
 #include "dynamics/guarded_step.h"
 #include "dynamics/overdamped_rod_step.h"
+#include "dynamics/rod_cluster.h"
 #include "dynamics/step_cost_report.h"
 
 #include <chrono>
@@ -31,6 +32,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 #include <memory>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -103,8 +105,6 @@ class FixRodImplicit : public Fix, public PartnerIntegrator, public RodRemovalLi
   // between steps so a long rod is not re-analysed every step. Not in
   // restart files: a fresh workspace gives the same step (tested), while
   // the contact records above are written (write_restart).
-  std::map<int, hsrod::OverdampedRodSolver> solvers_by_rod_;
-  std::map<int, hsrod::GuardWorkspace> guards_by_rod_;  // the guard's scratch per rod (no state)
   // The step's structures per rod, rebuilt in place every step from the
   // gather (no allocation per step; no state: restarts need none).
   struct RodScratch {
@@ -116,7 +116,14 @@ class FixRodImplicit : public Fix, public PartnerIntegrator, public RodRemovalLi
     hsrod::OverdampedStepResult result;   // unguarded step
     BondStiffnessCache stiffnesses;       // the bonds' stiffnesses while their inputs stay the same
   };
-  std::map<int, RodScratch> scratch_by_rod_;
+  // A rod's solver, its guard's scratch (no state) and step structures,
+  // found by one hashed lookup per step (not a search of a tree of all rods).
+  struct RodWork {
+    RodScratch scratch;
+    hsrod::OverdampedRodSolver solver;
+    hsrod::GuardWorkspace guard;
+  };
+  std::unordered_map<int, RodWork> work_by_rod_;
   // Cost model of the current run (printed by post_run): wall times of the
   // whole integrator and of the drag model, the solvers' split from their
   // statistics at setup and at the end (dynamics/step_cost_report.h).
@@ -147,7 +154,8 @@ class FixRodImplicit : public Fix, public PartnerIntegrator, public RodRemovalLi
   struct PendingStep {
     std::vector<int> molecules;  // the rod alone, or the cluster's rods
     StepTotals totals;           // its share of the step's totals
-    bool alone = true;           // the rod's scratch (scratch_by_rod_) holds the step; else the members below
+    bool alone = true;           // the rod's scratch (below) holds the step; else the members below
+    RodScratch *scratch = nullptr;  // the rod's, when alone (work_by_rod_)
     std::vector<GatheredSphere> spheres;
     hsrod::OverdampedRod rod;
     std::vector<Eigen::Vector3d> before;  // positions at the step's start [m]
@@ -163,6 +171,10 @@ class FixRodImplicit : public Fix, public PartnerIntegrator, public RodRemovalLi
   // Groups of molecule IDs stepped together (each a rod alone, or a cluster
   // of rods within contact or hydrodynamic reach), the same on every proc.
   std::vector<std::vector<int>> step_clusters(const RodGather &gather) const;
+  mutable std::vector<std::vector<Eigen::Vector3d>> cluster_positions_;  // step_clusters' buffers [m]
+  // The all-sphere searches' buffers: the clusters at the step's start and
+  // the meeting check (two lists: each is re-sorted from its last order).
+  mutable hsrod::RodSearchBuffers cluster_search_, meeting_search_;
   // Every rod's step (clusters merged where rods meet within it), scattered
   // to the atoms; returns the groups finally stepped together.
   std::vector<std::vector<int>> step_all(const RodGather &gather, const hsrod::WallContactParameters &walls,

@@ -130,7 +130,7 @@ void FixRodImplicit::refresh_bond_state() {
   if (bond_state_fresh_) return;
   double strain = joint_strain_, energy = joint_energy_;  // clusters: evaluated at their step
   for (int rod_id : stepped_rods_) {
-    const auto strain_energy = hsrod::bond_strain_and_energy(scratch_by_rod_[rod_id].rod);
+    const auto strain_energy = hsrod::bond_strain_and_energy(work_by_rod_[rod_id].scratch.rod);
     strain = std::max(strain, strain_energy.first);
     energy += strain_energy.second;
   }

@@ -48,14 +48,18 @@ std::vector<std::vector<int>> FixRodImplicit::step_clusters(const RodGather &gat
       if (gather.rods.count(held)) clusters.push_back({held});
     return clusters;
   }
-  std::vector<std::vector<Eigen::Vector3d>> positions;
+  // The moving rods' positions, in the order of `molecules` (the gather's),
+  // into buffers kept between steps.
+  std::vector<std::vector<Eigen::Vector3d>> &positions = cluster_positions_;
+  positions.resize(molecules.size());
   double largest_radius = 0.0, fastest = 0.0;
-  for (int molecule : molecules) {
-    const std::vector<GatheredSphere> &spheres = gather.rods.at(molecule);
-    positions.emplace_back();
-    positions.back().reserve(spheres.size());
-    for (const GatheredSphere &s : spheres) {
-      positions.back().push_back(s.position);
+  std::size_t r = 0;
+  for (const auto &entry : gather.rods) {
+    if (r == molecules.size() || entry.first != molecules[r]) continue;  // held
+    std::vector<Eigen::Vector3d> &rod = positions[r++];
+    rod.clear();
+    for (const GatheredSphere &s : entry.second) {
+      rod.push_back(s.position);
       largest_radius = std::max(largest_radius, s.radius);
       fastest = std::max(fastest, s.velocity.norm());
     }
@@ -67,7 +71,7 @@ std::vector<std::vector<int>> FixRodImplicit::step_clusters(const RodGather &gat
     reach = 2.0 * largest_radius + 2.0 * std::max(2.0 * max_displacement_ * largest_radius, 2.0 * fastest * update->dt);
   if (rod_interaction_) reach = std::max(reach, drag_->hydrodynamics().interaction_reach());
   std::vector<std::vector<int>> clusters;
-  for (const std::vector<int> &members : hsrod::rod_clusters(positions, reach)) {
+  for (const std::vector<int> &members : hsrod::rod_clusters(positions, reach, cluster_search_)) {
     clusters.emplace_back();
     for (int k : members) clusters.back().push_back(molecules[k]);
   }
@@ -128,7 +132,7 @@ bool FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
   const std::vector<Eigen::Vector3d> &before = step.before;
   // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
   const hsrod::ChannelGeometry *scene_walls = walls_ ? &hydro.geometry() : nullptr;
-  hsrod::OverdampedRodSolver &solver = joint ? solvers_by_cluster_[molecules] : solvers_by_rod_[first];
+  hsrod::OverdampedRodSolver &solver = joint ? solvers_by_cluster_[molecules] : work_by_rod_[first].solver;
   hsrod::OverdampedStepResult &result = step.result;
   if (guard_) {
     // Accuracy guard: substeps (drag re-evaluated at each) or a refusal.
@@ -136,7 +140,7 @@ bool FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
     try {
       hsrod::GuardedStepReport report =
           hsrod::guarded_rod_step(solver, rod, drag, drag_at, dt, scene_walls, &walls, limits_,
-                                  joint ? guards_by_cluster_[molecules] : guards_by_rod_[first]);
+                                  joint ? guards_by_cluster_[molecules] : work_by_rod_[first].guard);
       result = std::move(report.result);
       account_guard_report(name, report, step.totals.substeps);
     } catch (const std::exception &e) {
@@ -260,8 +264,15 @@ void FixRodImplicit::report_held_at_face(const std::string &who, int face) {
 // Joint workspaces of clusters that no longer exist are dropped (a cache:
 // a fresh one gives the same step), their statistics kept for the report.
 void FixRodImplicit::retire_stale_clusters(const std::vector<std::vector<int>> &clusters) {
+  // Only groups of several rods have a joint workspace: those, sorted, are
+  // searched (not every rod's group for every workspace).
+  std::vector<const std::vector<int> *> joint;
+  for (const std::vector<int> &cluster : clusters)
+    if (cluster.size() > 1) joint.push_back(&cluster);
+  const auto by_molecules = [](const std::vector<int> *a, const std::vector<int> *b) { return *a < *b; };
+  std::sort(joint.begin(), joint.end(), by_molecules);
   for (auto it = solvers_by_cluster_.begin(); it != solvers_by_cluster_.end();) {
-    if (std::find(clusters.begin(), clusters.end(), it->first) != clusters.end()) {
+    if (std::binary_search(joint.begin(), joint.end(), &it->first, by_molecules)) {
       ++it;
       continue;
     }

@@ -62,7 +62,8 @@ bool FixRodImplicit::step_rod_alone(int molecule, const std::vector<GatheredSphe
   hsrod::RodHydrodynamics &hydro = drag_->hydrodynamics();
   const int n = static_cast<int>(spheres.size());
   // The rod's structures live from step to step (no allocation per step).
-  RodScratch &scratch = scratch_by_rod_[molecule];
+  RodWork &work = work_by_rod_[molecule];
+  RodScratch &scratch = work.scratch;
   hsrod::OverdampedRod &rod = scratch.rod;
   update_overdamped_rod(spheres, bonds_->bond_set(), rod, scratch.stiffnesses);
   // Wall friction is linearised about the velocities of the last step
@@ -78,7 +79,7 @@ bool FixRodImplicit::step_rod_alone(int molecule, const std::vector<GatheredSphe
   scratch.before = rod.positions;
   // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
   const hsrod::ChannelGeometry *scene_walls = walls_ ? &hydro.geometry() : nullptr;
-  hsrod::OverdampedRodSolver &solver = solvers_by_rod_[molecule];
+  hsrod::OverdampedRodSolver &solver = work.solver;
   const hsrod::OverdampedStepResult &result = guard_ ? scratch.report.result : scratch.result;
   if (guard_) {
     // Accuracy guard: substeps (drag re-evaluated at each) or a refusal.
@@ -92,7 +93,7 @@ bool FixRodImplicit::step_rod_alone(int molecule, const std::vector<GatheredSphe
     };
     try {
       hsrod::guarded_rod_step(solver, rod, scratch.drag, drag_at, update->dt, scene_walls, &walls, limits_,
-                              guards_by_rod_[molecule], scratch.report);
+                              work.guard, scratch.report);
       account_guard_report("rod " + std::to_string(molecule), scratch.report, totals.substeps);
     } catch (const std::exception &e) {
       char msg[768];

@@ -41,6 +41,7 @@ void FixRodImplicit::step_group(const RodGather &gather, const std::vector<int> 
   if (molecules.size() == 1) {
     step.molecules = molecules;
     step.alone = true;
+    step.scratch = &work_by_rod_[molecules.front()].scratch;
     taken = step_rod_alone(molecules.front(), gather.rods.at(molecules.front()), walls, step.totals);
   } else {
     taken = step_cluster(gather, molecules, walls, step);
@@ -59,7 +60,7 @@ bool FixRodImplicit::merge_rods_meeting_in_step(const RodGather &gather, const h
   std::vector<const std::vector<Eigen::Vector3d> *> starts, ends;
   std::vector<const std::vector<double> *> radii;
   for (const PendingStep &p : pending_) {
-    RodScratch *scratch = p.alone ? &scratch_by_rod_[p.molecules.front()] : nullptr;
+    const RodScratch *scratch = p.alone ? p.scratch : nullptr;
     const hsrod::OverdampedRod &rod = scratch ? scratch->rod : p.rod;
     starts.push_back(scratch ? &scratch->before : &p.before);
     ends.push_back(&rod.positions);
@@ -82,7 +83,7 @@ bool FixRodImplicit::merge_rods_meeting_in_step(const RodGather &gather, const h
     ends.push_back(&held_positions.back());
     radii.push_back(&held_radii.back());
   }
-  const auto touching = hsrod::groups_meeting_in_step(starts, ends, radii);
+  const auto touching = hsrod::groups_meeting_in_step(starts, ends, radii, meeting_search_);
   const int stepped = static_cast<int>(pending_.size());
   // Held rods touching each other (the pile) are no business of the step.
   if (std::none_of(touching.begin(), touching.end(), [stepped](const auto &t) { return t.first < stepped; }))
@@ -189,7 +190,7 @@ std::vector<std::vector<int>> FixRodImplicit::step_all(const RodGather &gather,
       totals.rod_contacts += t.rod_contacts;
       totals.substeps = std::max(totals.substeps, t.substeps);
       if (p.alone) {
-        RodScratch &scratch = scratch_by_rod_[p.molecules.front()];
+        const RodScratch &scratch = *p.scratch;
         const hsrod::OverdampedStepResult &result = guard_ ? scratch.report.result : scratch.result;
         scatter_rod(gather.rods.at(p.molecules.front()), scratch.rod, scratch.before, result, scratch.drag);
       } else {

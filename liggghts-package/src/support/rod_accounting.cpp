@@ -1,6 +1,7 @@
 #include "rod_accounting.h"
 
 #include <algorithm>
+#include <tuple>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -10,9 +11,11 @@ namespace LAMMPS_NS {
 
 std::string RodCensus::check(const std::map<int, std::vector<GatheredSphere>> &rods) {
   char msg[160];
+  // Both maps are sorted by rod ID: walked side by side, O(rods).
+  auto found = rods.begin();
   for (const auto &known : spheres_by_rod_) {
-    const auto found = rods.find(known.first);
-    if (found == rods.end()) {
+    while (found != rods.end() && found->first < known.first) ++found;
+    if (found == rods.end() || found->first != known.first) {
       std::snprintf(msg, sizeof(msg), "rod %d (%d spheres) is gone", known.first, known.second);
       return msg;
     }
@@ -22,9 +25,11 @@ std::string RodCensus::check(const std::map<int, std::vector<GatheredSphere>> &r
       return msg;
     }
   }
+  auto known = spheres_by_rod_.begin();
   for (const auto &rod : rods) {
-    int &count = spheres_by_rod_[rod.first];
-    count = std::max(count, static_cast<int>(rod.second.size()));
+    while (known != spheres_by_rod_.end() && known->first < rod.first) ++known;
+    if (known == spheres_by_rod_.end() || known->first != rod.first) known = spheres_by_rod_.emplace_hint(known, rod.first, 0);
+    known->second = std::max(known->second, static_cast<int>(rod.second.size()));
   }
   return "";
 }
@@ -85,52 +90,64 @@ RodOverlap first_rod_overlap(const std::map<int, std::vector<GatheredSphere>> &r
   // apart in x and y: a cell list of that side in the plane gives every
   // such pair from a cell and its neighbours, O(rods) instead of all pairs.
   // A box with non-finite bounds is a candidate against every box.
-  std::vector<std::pair<std::size_t, std::size_t>> candidates;
-  std::map<std::pair<long, long>, std::vector<std::size_t>> cells;
+  struct Placed {
+    long cx, cy;
+    std::size_t box;
+  };
+  std::vector<Placed> placed;
   std::vector<std::size_t> unplaced;
   const Eigen::Vector2d side = largest.cwiseMax(Eigen::Vector2d::Constant(1e-300));
-  const auto cell_of = [&](const Box &b) {
-    return std::make_pair(static_cast<long>(std::floor(b.lo.x() / side.x())),
-                          static_cast<long>(std::floor(b.lo.y() / side.y())));
-  };
   for (std::size_t a = 0; a < boxes.size(); a++) {
     const Box &b = boxes[a];
     const bool placeable = b.lo.allFinite() && b.hi.allFinite() && std::fabs(b.lo.x() / side.x()) < 1e15 &&
                            std::fabs(b.lo.y() / side.y()) < 1e15;
-    if (placeable) cells[cell_of(b)].push_back(a);
+    if (placeable)
+      placed.push_back({static_cast<long>(std::floor(b.lo.x() / side.x())),
+                        static_cast<long>(std::floor(b.lo.y() / side.y())), a});
     else unplaced.push_back(a);
   }
-  for (const auto &cell : cells)
+  const auto cell_less = [](const Placed &p, const Placed &q) { return std::tie(p.cx, p.cy) < std::tie(q.cx, q.cy); };
+  std::sort(placed.begin(), placed.end(), [](const Placed &p, const Placed &q) {
+    return std::tie(p.cx, p.cy, p.box) < std::tie(q.cx, q.cy, q.box);
+  });
+  // The first overlapping pair of rods in the order of an all-pairs search
+  // (by rod id, i.e. by box index): the smallest candidate (a, b) whose
+  // rods overlap, then its closest spheres.
+  const auto spheres_overlap = [](const Box &p, const Box &q) {
+    if ((p.lo.array() > q.hi.array()).any() || (q.lo.array() > p.hi.array()).any()) return false;
+    for (const auto &s : *p.spheres)
+      for (const auto &t : *q.spheres)
+        if ((s.position - t.position).norm() / (s.radius + t.radius) < 1.0) return true;
+    return false;
+  };
+  std::pair<std::size_t, std::size_t> first{boxes.size(), boxes.size()};
+  const auto consider = [&](std::size_t a, std::size_t b) {
+    const std::pair<std::size_t, std::size_t> candidate{std::min(a, b), std::max(a, b)};
+    if (candidate < first && spheres_overlap(boxes[candidate.first], boxes[candidate.second])) first = candidate;
+  };
+  for (const Placed &cell : placed)
     for (long dx = -1; dx <= 1; ++dx)
       for (long dy = -1; dy <= 1; ++dy) {
-        const auto other = cells.find({cell.first.first + dx, cell.first.second + dy});
-        if (other == cells.end()) continue;
-        for (std::size_t a : cell.second)
-          for (std::size_t b : other->second)
-            if (a < b) candidates.emplace_back(a, b);
+        const Placed key{cell.cx + dx, cell.cy + dy, 0};
+        for (auto other = std::lower_bound(placed.begin(), placed.end(), key, cell_less);
+             other != placed.end() && other->cx == key.cx && other->cy == key.cy; ++other)
+          if (cell.box < other->box) consider(cell.box, other->box);
       }
   for (std::size_t a : unplaced)
     for (std::size_t b = 0; b < boxes.size(); b++)
-      if (a != b) candidates.emplace_back(std::min(a, b), std::max(a, b));
-  // In the order of an all-pairs search: the first overlapping pair of rods
-  // (by rod id), and its closest spheres.
-  std::sort(candidates.begin(), candidates.end());
-  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+      if (a != b) consider(a, b);
   RodOverlap worst;
+  if (first.first == boxes.size()) return worst;
+  const Box &p = boxes[first.first], &q = boxes[first.second];
   double smallest = 1.0;
-  for (const auto &[a, b] : candidates) {
-    const Box &p = boxes[a], &q = boxes[b];
-    if ((p.lo.array() > q.hi.array()).any() || (q.lo.array() > p.hi.array()).any()) continue;
-    for (const auto &s : *p.spheres)
-      for (const auto &t : *q.spheres) {
-        const double ratio = (s.position - t.position).norm() / (s.radius + t.radius);
-        if (ratio < smallest) {
-          smallest = ratio;
-          worst = RodOverlap{p.id, q.id, ratio};
-        }
+  for (const auto &s : *p.spheres)
+    for (const auto &t : *q.spheres) {
+      const double ratio = (s.position - t.position).norm() / (s.radius + t.radius);
+      if (ratio < smallest) {
+        smallest = ratio;
+        worst = RodOverlap{p.id, q.id, ratio};
       }
-    if (worst.rod_a >= 0) return worst;
-  }
+    }
   return worst;
 }
 

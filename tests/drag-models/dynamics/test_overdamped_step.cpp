@@ -214,6 +214,36 @@ TEST(OverdampedStep, CellListFindsExactlyThePairsOfTheAllPairsSearch) {
   EXPECT_EQ(cell_pairs, all_pairs);
 }
 
+TEST(OverdampedStep, CellListOrderIsTheSameBucketedSortedOrKept) {
+  // The cells are bucketed by a counting sort where the grid is compact, sorted
+  // by comparison where it is not, and re-sorted from the last call's order
+  // when kept: the pairs in cell order (unsorted) must be the same, in the
+  // same order, on all three paths (the implicit step's contact sums follow it).
+  const double d = 3e-6, reach = d;
+  std::vector<Eigen::Vector3d> positions;
+  for (int k = 0; k < 400; ++k)
+    positions.emplace_back(0.8 * d * (k % 25) + 1e-7 * std::sin(5.0 * k), 0.85 * d * (k / 25), 1e-6 * std::cos(k));
+  const auto bucketed = nearby_sphere_pairs(positions, reach, false);
+  // One sphere far out in +x: the grid spans 10^5 cells, > 4 n: comparison sort;
+  // x_min, y_min are unchanged, so are the others' cells, and it has no pairs.
+  std::vector<Eigen::Vector3d> sparse = positions;
+  sparse.emplace_back(1.0, 0.0, 0.0);
+  const auto sorted = nearby_sphere_pairs(sparse, reach, false);
+  // Kept: a first call on shuffled-in-place positions, then the real ones.
+  PairSearchCells cells;
+  std::vector<std::pair<int, int>> kept;
+  std::vector<Eigen::Vector3d> moved = positions;
+  for (auto& x : moved) x.x() = -x.x();
+  find_nearby_pairs(moved, reach, cells, kept, false);
+  find_nearby_pairs(positions, reach, cells, kept, false);
+  EXPECT_GT(bucketed.size(), positions.size());  // there are near pairs to find
+  EXPECT_EQ(sorted, bucketed);
+  EXPECT_EQ(kept, bucketed);
+  auto lexicographic = bucketed;
+  std::sort(lexicographic.begin(), lexicographic.end());
+  EXPECT_EQ(nearby_sphere_pairs(positions, reach, true), lexicographic);
+}
+
 TEST(OverdampedStep, KeptSolverAnalysesThePatternOnceAndMatchesFreshSteps) {
   // A 40-sphere stiff rod (block-tridiagonal path) across a uniform stream for 30
   // steps: the solver kept between steps analyses its LU pattern once and

@@ -10,15 +10,15 @@ const WallProximityLaw& wall_proximity_with_reflections() {
   static const WallProximityLaw fitted = [] {
     WallProximityLaw w;
     w.active = true;
-    w.normal = 0.7643680797101751;
-    w.along = 0.2280160141066446;
+    w.normal = 0.7643578648436209;
+    w.along = 0.22656447535431823;
     w.screening = 0.36723634640541725;
-    w.normal_row_gain = 0.29810984481450764;
-    w.along_row_gain = -0.04342815200628692;
-    w.normal_held = 8.990639811350919;
-    w.along_held = 0.09198798492453492;
-    w.squeeze = -0.17758806051995776;
-    w.squeeze_held = -0.00921749702792513;
+    w.normal_row_gain = 0.2981776570283201;
+    w.along_row_gain = -0.04341334117571612;
+    w.normal_held = 9.008863117613089;
+    w.along_held = 0.0908625745519806;
+    w.squeeze = -0.17770280129820004;
+    w.squeeze_held = -0.009190830748239133;
     w.beta_min = 0.15;
     w.beta_max = 0.3;
     return w;

@@ -185,9 +185,10 @@ ImageSeries reflected_force_images(const ChannelGeometry& walls, const Eigen::Ve
           // a wall's cylinder: one copy of each mirror pair in that wall (the
           // other's image is its mirror, in the same lattice); another cylinder: both sets
           circle_images_of_lattice(Complex(p.x(), p.y()), h.image.map, c, W, r == h.reflector, r, children);
+          // (the mirror partner of a cylinder's own image is a wall's, so reflected in it)
           if (reflectors[r].wall < 0)
-            circle_images_of_lattice(Complex(p.x(), 2.0 * walls.y_lo() - p.y()), flip * h.image.map, c, W,
-                                     r == h.reflector, r, children);
+            circle_images_of_lattice(Complex(p.x(), 2.0 * walls.y_lo() - p.y()), flip * h.image.map, c, W, false, r,
+                                     children);
           for (const Head& child : children) {
             const double w = weight(child.image, x_source, W);
             if (w < control.prune) continue;
@@ -197,6 +198,7 @@ ImageSeries reflected_force_images(const ChannelGeometry& walls, const Eigen::Ve
           }
         }
     series.generations = g;
+    if (static_cast<int>(series.images.size()) > control.max_images) return series;  // not converged
     if (g == 1) first += total;
     series.last_weight = total / first;
     if (g > 1 && series.last_weight < control.tolerance) {

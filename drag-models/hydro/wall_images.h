@@ -93,6 +93,7 @@ struct ReflectionControl {
   double tolerance = 1e-3;    // stop when a generation's weight is below this of the first's [-]
   double prune = 1e-3;        // drop an image whose own weight is below this [-]
   int max_generations = 40;   // at most this many generations of reflections
+  int max_images = 20000;     // stop (not converged) beyond this many images, e.g. in a dense pillar array
 };
 
 // The multiple reflections of a force at x_source [m]: the source's two first
@@ -104,7 +105,7 @@ struct ImageSeries {
   double y_lo = 0.0, width = 0.0;                     // the strip of the lattice [m]
   int generations = 0;                                // generations computed
   double last_weight = 0.0;                           // last generation's weight / the first's [-]
-  bool converged = false;                             // last_weight < tolerance within max_generations
+  bool converged = false;                             // last_weight < tolerance within max_generations, max_images
 };
 
 ImageSeries reflected_force_images(const ChannelGeometry& walls, const Eigen::Vector2d& x_source,

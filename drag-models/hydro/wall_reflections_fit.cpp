@@ -10,15 +10,15 @@ const WallProximityLaw& wall_proximity_with_reflections() {
   static const WallProximityLaw fitted = [] {
     WallProximityLaw w;
     w.active = true;
-    w.normal = 0.7643578648436209;
-    w.along = 0.22656447535431823;
-    w.screening = 0.36723634640541725;
-    w.normal_row_gain = 0.2981776570283201;
-    w.along_row_gain = -0.04341334117571612;
-    w.normal_held = 9.008863117613089;
-    w.along_held = 0.0908625745519806;
-    w.squeeze = -0.17770280129820004;
-    w.squeeze_held = -0.009190830748239133;
+    w.normal = 0.7720225684264698;
+    w.along = 0.22706279524366177;
+    w.screening = 0.36319724214183857;
+    w.normal_row_gain = 0.2883276730495079;
+    w.along_row_gain = -0.041033253020882836;
+    w.normal_held = 0.0;
+    w.along_held = 0.0;
+    w.squeeze = -0.17851323878222217;
+    w.squeeze_held = 0.0;
     w.beta_min = 0.15;
     w.beta_max = 0.3;
     return w;

@@ -143,22 +143,22 @@ TEST(calibration_WallImages, RegisteredLevelThreeWithImagesIsTheCheckedModel) {
 
 // Level 3 with the multiple reflections between walls and cylinders
 // (WallReflection::reflections) and the law refitted on top of them
-// (calibration/data/wall_proximity_fit_reflections.json, the same cases held out).
+// (calibration/data/wall_proximity_fit_reflections.json, hsrod_fit_wall_proximity
+// --levels twoway,nonlocal+reflections --friction-only, the same cases held out).
 TEST(calibration_WallReflections, LevelThreeWithReflectionsIsWithinTenPercentOfHeldOutRowsOneDiameterFromAWall) {
   const Worst w = held_out_worst_of("wall_heldout", "nonlocal+reflections");
   EXPECT_LT(w.total, 0.10);
   EXPECT_LT(w.profile, 0.10);
 }
 
-TEST(calibration_WallReflections, LevelThreeWithReflectionsTotalsAreWithinTenPercentOfHeldOutRowsBesideAPore) {
+// The law on top of the reflections is the friction-only fit
+// (hsrod_fit_wall_proximity --friction-only: the held-load terms b_n, b_t,
+// b_q fixed at 0): with them the dynamic passage turned 12.8 deg instead of
+// the resolved 20.2 deg.
+TEST(calibration_WallReflections, LevelThreeWithReflectionsIsWithinTenPercentOfHeldOutRowsBesideAPore) {
+  // 6 cases: rows along / across / at 45 deg 1 d from a pore cylinder, dragged and held
   const Worst w = held_out_worst_of("pore_heldout", "nonlocal+reflections");
   EXPECT_LT(w.total, 0.10);
-}
-
-// Not met: the per-sphere profile of the row along the pore wall (a0, held
-// load) stays 12.7 % RMS off (calibration/validation/crosscheck_near_wall.md).
-TEST(calibration_WallReflections, DISABLED_LevelThreeWithReflectionsProfileIsWithinTenPercentBesideAPore) {
-  const Worst w = held_out_worst_of("pore_heldout", "nonlocal+reflections");
   EXPECT_LT(w.profile, 0.10);
 }
 

@@ -1,4 +1,7 @@
-// The level-3 near-wall law fitted on top of the walls' images and their multiple reflections
+// The level-3 near-wall law fitted on top of the walls' images and their
+// multiple reflections, friction terms only (--friction-only: the held-load
+// terms were what stopped the rod turning in the dynamic pore passage,
+// calibration/validation/crosscheck_near_wall.md)
 // (hydro/wall_proximity.h, wall_proximity_with_reflections): the parameters of
 // calibration/data/wall_proximity_fit_reflections.json, level "nonlocal+reflections"
 // (hsrod_fit_wall_proximity --levels; test calibration_WallReflections.BuiltInLawIsTheFit).

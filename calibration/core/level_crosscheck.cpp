@@ -75,7 +75,8 @@ std::unique_ptr<HydrodynamicModel> make_level_model(const std::string& model_nam
                                                     const NearFieldCalibration& near_field) {
   const double beta = p.beta();  // the near field's parameters are functions of beta
   if (model_name == "nonlocal") return std::make_unique<NonlocalRodModel>(p, table, near_field.nonlocal.at(beta));
-  if (model_name == "nonlocal+images" || model_name == "nonlocal+self_images") {
+  if (model_name == "nonlocal+images" || model_name == "nonlocal+self_images" ||
+      model_name == "nonlocal+reflections") {
     // level 3 with the walls' images (hydro/wall_images.h): all, or each sphere's own only
     auto model = std::make_unique<NonlocalRodModel>(p, table, near_field.nonlocal.at(beta));
     model->set_wall_reflection(wall_reflection_from_name(model_name.substr(model_name.find('+') + 1)));

@@ -157,6 +157,7 @@ void crosscheck_level(const std::string& label, const std::string& level, const 
   // top of them (what `wall_reflection images` ships), the others the built-in fit.
   hsrod::WallProximityCalibration wall = hsrod::WallProximityCalibration::built_in();
   if (level == "nonlocal+images") wall.nonlocal = hsrod::wall_proximity_with_images();
+  if (level == "nonlocal+reflections") wall.nonlocal = hsrod::wall_proximity_with_reflections();
   for (const SceneCase& c : cases) {
     std::vector<Eigen::Vector2d> m;
     try {

@@ -23,6 +23,8 @@ std::unique_ptr<HydrodynamicModel> make_nonlocal(const HydrodynamicParameters& p
   auto model = std::make_unique<NonlocalRodModel>(p, table);
   model->set_wall_reflection(options.wall_reflection);
   if (options.wall_reflection == WallReflection::images) model->set_wall_proximity(wall_proximity_with_images());
+  if (options.wall_reflection == WallReflection::reflections)
+    model->set_wall_proximity(wall_proximity_with_reflections());
   return model;
 }
 

@@ -23,7 +23,8 @@ namespace hsrod {
 struct ModelOptions {
   TwoWayWindowOptions window;  // level 4 (twoway)
   // Level 3 (nonlocal): the walls' images in the coupling (hydro/wall_images.h);
-  // with images, the near-wall law fitted on top of them (wall_proximity_with_images).
+  // with images or reflections, the near-wall law fitted on top of them
+  // (wall_proximity_with_images, wall_proximity_with_reflections).
   WallReflection wall_reflection = WallReflection::none;
 };
 

@@ -107,8 +107,9 @@ WallReflection wall_reflection_from_name(const std::string& name) {
   if (name == "none") return WallReflection::none;
   if (name == "images") return WallReflection::images;
   if (name == "self_images") return WallReflection::self_images;
+  if (name == "reflections") return WallReflection::reflections;
   throw std::invalid_argument("nonlocal: wall reflection '" + name +
-                              "': accepted values are none, images, self_images");
+                              "': accepted values are none, images, self_images, reflections");
 }
 
 void NonlocalRodModel::solve_coupling(const RodGeometry& rod, const ChannelGeometry* walls,
@@ -164,14 +165,19 @@ void NonlocalRodModel::add_wall_images(const RodGeometry& rod, const ChannelGeom
   const int n = rod.size();
   const double scale = obstruction_friction_ * kMidplaneFactor;
   const double mu = parameters_.viscosity, H = parameters_.gap_height;
+  std::vector<ImageSeries> series;  // multiple reflections: each sphere's series, built once
+  if (wall_reflection_ == WallReflection::reflections)
+    for (int i = 0; i < n; ++i) series.push_back(reflected_force_images(walls, rod.positions[i].head<2>()));
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector2d xi = rod.positions[i].head<2>();
     const int last = wall_reflection_ == WallReflection::self_images ? i + 1 : n;
     for (int k = i; k < last; ++k) {
       const Eigen::Vector2d xk = rod.positions[k].head<2>();
       // reciprocal to round-off (wall_images.h): symmetrised
-      const Eigen::Matrix2d g = 0.5 * scale *
-                                (image_mobility(walls, xi, xk, mu, H) + image_mobility(walls, xk, xi, mu, H).transpose());
+      const Eigen::Matrix2d g =
+          0.5 * scale *
+          (series.empty() ? image_mobility(walls, xi, xk, mu, H) + image_mobility(walls, xk, xi, mu, H).transpose()
+                          : image_mobility(series[k], xi, mu, H) + image_mobility(series[i], xk, mu, H).transpose());
       coupling.block<2, 2>(2 * i, 2 * k) += g;
       if (k != i) coupling.block<2, 2>(2 * k, 2 * i) += g.transpose();
       if (coupling_driving.size() == 0) continue;

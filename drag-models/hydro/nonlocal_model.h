@@ -72,9 +72,11 @@ double depth_averaged_interaction_reach(double gap_height, double viscosity, dou
 
 // How level 3 treats the walls that span the gap: `none` (free-space G),
 // `images` (hydro/wall_images.h) or `self_images` (each sphere's own image
-// only, the diagonal blocks: what a per-sphere level could carry).
-enum class WallReflection { none, images, self_images };
-// "none" | "images" | "self_images"; throws std::invalid_argument naming the accepted values.
+// only, the diagonal blocks: what a per-sphere level could carry) or
+// `reflections` (the images with their multiple reflections between the
+// walls and cylinders, wall_images.h: reflected_force_images).
+enum class WallReflection { none, images, self_images, reflections };
+// "none" | "images" | "self_images" | "reflections"; throws std::invalid_argument naming the accepted values.
 WallReflection wall_reflection_from_name(const std::string& name);
 
 class NonlocalRodModel : public LocalDragBase {

@@ -4,6 +4,7 @@
 #include "hydro/brinkman_green.h"
 
 #include <cmath>
+#include <algorithm>
 #include <complex>
 
 namespace hsrod {
@@ -12,10 +13,11 @@ namespace {
 
 using Complex = std::complex<double>;
 
-// Mirror in the line y = y_wall: (F_t, F_n) -> (F_t, -F_n).
-ForceImage mirror(const Eigen::Vector2d& x, const Eigen::Matrix2d& map, double y_wall) {
+// Mirror in the line y = y_wall: (F_t, F_n) -> (F_t, -F_n); the field keeps
+// its kind (G(S r) = S G(r) S for the full Brinkman G too).
+ForceImage mirror(const Eigen::Vector2d& x, const Eigen::Matrix2d& map, double y_wall, bool full_brinkman = true) {
   const Eigen::Matrix2d flip = Eigen::Vector2d(1.0, -1.0).asDiagonal();
-  return {Eigen::Vector2d(x.x(), 2.0 * y_wall - x.y()), flip * map, true};
+  return {Eigen::Vector2d(x.x(), 2.0 * y_wall - x.y()), flip * map, full_brinkman};
 }
 
 // Circle-theorem image of a force (map `map`) at x in the cylinder c.
@@ -29,7 +31,201 @@ ForceImage circle_image(const Eigen::Vector2d& x, const Eigen::Matrix2d& map, co
   return {Eigen::Vector2d(c.center_x + z1.real(), c.center_y + z1.imag()), t * map, false};
 }
 
+// One reflector of the method of reflections: a side wall (wall 0: y_lo,
+// 1: y_hi) with the cylinders centred on it, or one other cylinder (wall -1).
+struct Reflector {
+  int wall = -1;
+  std::vector<ZCylinder> circles;
+};
+
+std::vector<Reflector> reflectors_of(const ChannelGeometry& walls) {
+  std::vector<Reflector> r = {{0, {}}, {1, {}}};
+  const double on_wall = 1e-9 * walls.width();  // a centre on a side wall [m]
+  for (const ZCylinder& c : walls.cylinders()) {
+    if (c.radius <= 0.0) continue;
+    if (std::abs(c.center_y - walls.y_lo()) <= on_wall)
+      r[0].circles.push_back(c);
+    else if (std::abs(c.center_y - walls.y_hi()) <= on_wall)
+      r[1].circles.push_back(c);
+    else
+      r.push_back({-1, {c}});
+  }
+  return r;
+}
+
+// |map| (W / |image - source|)^2: the image's far field at the source per
+// that of a unit force one channel width away [-] (the maps are |q| times
+// an orthogonal matrix, so |map| = Frobenius / sqrt 2).
+double weight(const ForceImage& image, const Eigen::Vector2d& source, double width) {
+  const double r2 = (image.position - source).squaredNorm();
+  return image.map.norm() / std::sqrt(2.0) * width * width / r2;
+}
+
+// The force map of a circle image, f' = q conj(f).
+Eigen::Matrix2d circle_map(Complex q) {
+  Eigen::Matrix2d t;
+  t << q.real(), q.imag(), q.imag(), -q.real();
+  return t;
+}
+
+// (pi / 2W)^2 / sinh^2(pi w / 2W) - 1 / w^2 [1/m^2], the lattice sum of
+// 1 / (w - 2 k W i)^2 over k without k = 0 (Laurent series near w = 0).
+Complex lattice_without_origin(Complex w, double width) {
+  const double k = kPi / (2.0 * width);
+  const Complex s = k * w;
+  if (std::abs(s) < 1e-2) {
+    const Complex s2 = s * s;
+    return k * k * (-1.0 / 3.0 + s2 / 15.0 - 2.0 * s2 * s2 / 189.0);
+  }
+  if (std::abs(s.real()) > 300.0) return -1.0 / (w * w);  // 1 / sinh^2 underflows
+  const Complex sh = std::sinh(s);
+  return k * k / (sh * sh) - 1.0 / (w * w);
+}
+
+// u - i v = c (A f + B conj f) as a 2x2 tensor per unit (F_x, F_y), c = H / (24 pi mu).
+Eigen::Matrix2d complex_tensor(Complex a, Complex b, double viscosity, double gap_height) {
+  const double c = gap_height / (24.0 * kPi * viscosity);
+  const Complex fx = c * (a + b), fy = c * Complex(0.0, 1.0) * (a - b);
+  Eigen::Matrix2d m;
+  m << fx.real(), fy.real(), -fx.imag(), -fy.imag();
+  return m;
+}
+
+// The dipoles of an image at z0 [m] and of all its mirror images in the
+// strip's walls, per unit image force [m/(N s)].
+Eigen::Matrix2d strip_lattice(double y_lo, double width, const Eigen::Vector2d& x_target, const Eigen::Vector2d& at,
+                              double viscosity, double gap_height) {
+  const Complex z(x_target.x(), x_target.y()), z0(at.x(), at.y()), z0m(at.x(), 2.0 * y_lo - at.y());
+  const Complex w = z - z0, wm = z - z0m;
+  return complex_tensor(lattice_without_origin(w, width) + 1.0 / (w * w),
+                        lattice_without_origin(wm, width) + 1.0 / (wm * wm), viscosity, gap_height);
+}
+
 }  // namespace
+
+Eigen::Matrix2d strip_lattice_remainder(double y_lo, double width, const Eigen::Vector2d& x_target,
+                                        const Eigen::Vector2d& x_source, double viscosity, double gap_height) {
+  // u - i v = c (A f + B conj f), c = H / (24 pi mu): A the source's lattice
+  // z0 + 2kWi (k != 0), B its mirror's z0' + 2kWi without the first mirrors
+  // k = 0 (in y_lo) and k = 1 (in y_hi), which are explicit images.
+  const Complex z(x_target.x(), x_target.y()), z0(x_source.x(), x_source.y());
+  const Complex z0m(x_source.x(), 2.0 * y_lo - x_source.y());
+  const Complex hi = z0m + Complex(0.0, 2.0 * width);
+  const Complex a = lattice_without_origin(z - z0, width);
+  Complex b = lattice_without_origin(z - z0m, width);
+  b -= 1.0 / ((z - hi) * (z - hi));
+  return complex_tensor(a, b, viscosity, gap_height);
+}
+
+namespace {
+
+// A head of the series: an image evaluated with its whole strip lattice.
+struct Head {
+  ForceImage image;
+  int reflector = -1;  // the reflector that made it (-1: the source)
+};
+
+// Copies of a lattice farther than this many radii from a cylinder's centre
+// have their circle images gathered into one dipole at the centre: the
+// image of copy k sits a^2 / |z_k| <= a / 12 from it, which moves its field
+// on the cylinder by <= 2 a / |z_k| = 1/6 of the gathered part (at 6 radii
+// the throat's normal-velocity residual stalled at 5e-3; at 12 it falls
+// with `prune`, test_wall_reflections.cpp).
+constexpr double kGatherRadii = 12.0;
+
+// The circle images in cylinder c of the lattice copies z + 2 k W i (map t)
+// of a head: the near copies one by one, the far ones gathered (closed-form
+// lattice sum minus the near terms). `skip_own`: the copy k = 0 is (the
+// mirror partner of) the head's own maker and is not reflected again.
+void circle_images_of_lattice(Complex z, const Eigen::Matrix2d& t, const ZCylinder& c, double width, bool skip_own,
+                              int reflector, std::vector<Head>& out) {
+  const Complex w0 = z - Complex(c.center_x, c.center_y);
+  const double a2 = c.radius * c.radius, reach = kGatherRadii * c.radius;
+  Complex far = lattice_without_origin(w0, width);  // sum over k != 0 of 1 / (w0 + 2kWi)^2
+  const int k_lo = static_cast<int>(std::ceil((-reach - w0.imag()) / (2.0 * width)));
+  const int k_hi = static_cast<int>(std::floor((reach - w0.imag()) / (2.0 * width)));
+  for (int k = std::min(k_lo, 0); k <= std::max(k_hi, 0); ++k) {
+    const Complex zk = w0 + Complex(0.0, 2.0 * k * width);
+    if (k != 0) far -= 1.0 / (zk * zk);
+    if ((k == 0 && skip_own) || std::abs(zk) <= c.radius) continue;
+    const Complex zc = std::conj(zk);
+    out.push_back({{Eigen::Vector2d(c.center_x + (a2 / zc).real(), c.center_y + (a2 / zc).imag()),
+                    circle_map(-a2 / (zc * zc)) * t, false, true},
+                   reflector});
+  }
+  out.push_back({{Eigen::Vector2d(c.center_x, c.center_y), circle_map(-a2 * std::conj(far)) * t, false, true}, reflector});
+}
+
+}  // namespace
+
+ImageSeries reflected_force_images(const ChannelGeometry& walls, const Eigen::Vector2d& x_source,
+                                   const ReflectionControl& control) {
+  ImageSeries series;
+  series.source = x_source;
+  series.y_lo = walls.y_lo();
+  series.width = walls.width();
+  const double W = series.width;
+  const std::vector<Reflector> reflectors = reflectors_of(walls);
+  // the source's first mirrors, full Brinkman (excluded from its lattice remainder)
+  double first = 0.0;
+  for (double y_wall : {walls.y_lo(), walls.y_hi()}) {
+    series.images.push_back(mirror(x_source, Eigen::Matrix2d::Identity(), y_wall));
+    first += weight(series.images.back(), x_source, W);
+  }
+  const Eigen::Matrix2d flip = Eigen::Vector2d(1.0, -1.0).asDiagonal();
+  std::vector<Head> generation = {{{x_source, Eigen::Matrix2d::Identity(), false, true}, -1}}, next, children;
+  for (int g = 1; g <= control.max_generations && !generation.empty(); ++g) {
+    next.clear();
+    double total = 0.0;
+    for (const Head& h : generation)
+      for (int r = 0; r < static_cast<int>(reflectors.size()); ++r)
+        for (const ZCylinder& c : reflectors[r].circles) {
+          children.clear();
+          const Eigen::Vector2d& p = h.image.position;
+          // a wall's cylinder: one copy of each mirror pair in that wall (the
+          // other's image is its mirror, in the same lattice); another cylinder: both sets
+          circle_images_of_lattice(Complex(p.x(), p.y()), h.image.map, c, W, r == h.reflector, r, children);
+          // (the mirror partner of a cylinder's own image is a wall's, so reflected in it)
+          if (reflectors[r].wall < 0)
+            circle_images_of_lattice(Complex(p.x(), 2.0 * walls.y_lo() - p.y()), flip * h.image.map, c, W, false, r,
+                                     children);
+          for (const Head& child : children) {
+            const double w = weight(child.image, x_source, W);
+            if (w < control.prune) continue;
+            series.images.push_back(child.image);
+            total += w;
+            next.push_back(child);
+          }
+        }
+    series.generations = g;
+    if (static_cast<int>(series.images.size()) > control.max_images) return series;  // not converged
+    if (g == 1) first += total;
+    series.last_weight = total / first;
+    if (g > 1 && series.last_weight < control.tolerance) {
+      series.converged = true;
+      return series;
+    }
+    generation.swap(next);
+  }
+  series.converged = generation.empty();
+  return series;
+}
+
+Eigen::Matrix2d image_mobility(const ImageSeries& series, const Eigen::Vector2d& x_target, double viscosity,
+                               double gap_height) {
+  Eigen::Matrix2d m = strip_lattice_remainder(series.y_lo, series.width, x_target, series.source, viscosity, gap_height);
+  for (const ForceImage& image : series.images) {
+    const Eigen::Vector2d r = x_target - image.position;
+    if (r.squaredNorm() <= 0.0) continue;
+    if (image.strip_lattice)
+      m += strip_lattice(series.y_lo, series.width, x_target, image.position, viscosity, gap_height) * image.map;
+    else
+      m += (image.full_brinkman ? brinkman_green_function(r, viscosity, gap_height)
+                                : hele_shaw_dipole(r, viscosity, gap_height)) *
+           image.map;
+  }
+  return m;
+}
 
 std::vector<ForceImage> force_images(const ChannelGeometry& walls, const Eigen::Vector2d& x) {
   const Eigen::Matrix2d one = Eigen::Matrix2d::Identity();

@@ -99,6 +99,10 @@ struct WallProximityCalibration {
 // Held out: within 7.7 % (totals) / 8.6 % (per-sphere RMS) 1 d from a side
 // wall, 11.7 % / 11.4 % 1 d from a pore cylinder.
 const WallProximityLaw& wall_proximity_with_images();
+// The same, friction terms only, fitted on top of the multiple reflections (WallReflection::reflections;
+// calibration/data/wall_proximity_fit_reflections.json, level "nonlocal+reflections",
+// equal to hydro/wall_reflections_fit.cpp: calibration_WallReflections.BuiltInLawIsTheFit).
+const WallProximityLaw& wall_proximity_with_reflections();
 
 // Shapes of the single-wall rises (3-D Stokes, see above) at surface gap
 // delta over the sphere radius a [-].

@@ -27,8 +27,9 @@
      timestep_check yes|no  explicit mode: refuse dt above the drag limit (default yes)
      placement_check yes|no at each run's start refuse spheres outside the fluid (default yes)
      memory_limit B      largest dense level-3 model [bytes] (default 2e9)
-     wall_reflection none|images  nonlocal: the walls' images in the coupling, with the near-wall law
-                         fitted on top of them (hydro/wall_images.h; default none)
+     wall_reflection none|images|reflections  nonlocal: the walls' images (first, or with their
+                         multiple reflections) in the coupling, with the near-wall law fitted on
+                         top of them (hydro/wall_images.h; default none)
 ------------------------------------------------------------------------- */
 
 #include "fix_hele_shaw_drag.h"
@@ -173,8 +174,8 @@ int model_keyword(const Keyword &k, hsrod::ModelSpec &model) {
   } else if (k.is("wall_reflection")) {
     k.need(1);
     const std::string value = k.arg[k.iarg + 1];
-    if (value != "none" && value != "images")
-      k.error->all(FLERR, "fix hele_shaw/drag: wall_reflection must be none or images");
+    if (value != "none" && value != "images" && value != "reflections")
+      k.error->all(FLERR, "fix hele_shaw/drag: wall_reflection must be none, images or reflections");
     model.options.wall_reflection = hsrod::wall_reflection_from_name(value);
   } else {
     return 0;
@@ -262,7 +263,7 @@ void FixHeleShawDrag::parse_keywords(int narg, char **arg, hsrod::SceneSpec &sce
     iarg += 1 + values;
   }
   if (model.options.wall_reflection != hsrod::WallReflection::none && model.name != "nonlocal")
-    error->all(FLERR, "fix hele_shaw/drag: wall_reflection images needs model nonlocal (level 4 carries the walls "
+    error->all(FLERR, "fix hele_shaw/drag: wall_reflection images|reflections needs model nonlocal (level 4 carries the walls "
                       "in its window; levels 1-2 and auto have no coupling to reflect)");
   if (model.options.window.reflection_cells_per_diameter > model.options.window.cells_per_diameter)
     error->all(FLERR, "fix hele_shaw/drag: window_reflection_cells must be in [1, window_cells] cells per sphere diameter");

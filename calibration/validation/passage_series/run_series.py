@@ -6,6 +6,7 @@ the paper's Fig. 9, from the resolved runs instead of from the model.
     /usr/bin/python3 calibration/validation/passage_series/run_series.py run BUILD_DIR [--work DIR] [--only TAG]
     /usr/bin/python3 calibration/validation/passage_series/run_series.py compare BUILD_DIR [--work DIR]
     /usr/bin/python3 calibration/validation/passage_series/run_series.py status
+    /usr/bin/python3 calibration/validation/passage_series/run_series.py salvage BUILD_DIR --work DIR --only TAG
 
 `run` writes each case's scene (scene_<tag>.json here), builds its case with
 calibration/tools/hsrod_case.py in the work directory and runs it under
@@ -13,7 +14,10 @@ nice -n 19 (rodIbFoam coupled to LIGGGHTS; BUILD_DIR/calibration/rodIbFoam).
 A finished case is recorded in <tag>/ beside this file (resolved.csv,
 resolved_rodMeasures_raw.csv, resolved_run.json) and skipped by later runs;
 an interrupted case is started again from its beginning, so an interrupted
-series loses only the case that was running. `compare` runs
+series loses only the case that was running. A run that stops because the
+rod reached the outlet after the passage (the DEM side stops when a sphere
+leaves the box) is recorded with a note; `salvage` records such a case from
+its work directory without running it again. `compare` runs
 ../pore_passage/in.passage at levels 2-4 and `auto` on every recorded
 scene (<tag>/level_<model>.csv) and writes table.md and series.png.
 The beta 0.3 member is ../pore_passage's recorded reference.
@@ -71,7 +75,40 @@ def recorded(tag):
     return os.path.exists(os.path.join(HERE, tag, "resolved.csv"))
 
 
-def collect(case_dir, tag, sc, cpu, wall):
+def reached_outlet(case_dir, sc):
+    """A note when a run that stopped early had carried the rod past the
+    passage measures' last point and to the outlet (its DEM side stops when a
+    sphere leaves the box), else None: the run then holds all it was for."""
+    raw = os.path.join(case_dir, "postProcessing", "rodIbFoam", "rodMeasures.csv")
+    if not os.path.exists(raw):
+        return None
+    rows = pm.read_run(raw)
+    rod_length = sc["rod"]["n"] * sc["rod"]["d"]
+    x_end, x_after = rows[-1]["x_com"], sc["pore"]["x"] + 2.0 * sc["pore"]["R"]
+    if x_end < x_after + sc["rod"]["d"] or x_end < sc["channel"]["L"] - rod_length:
+        return None
+    return ("the run stopped at t = %.4g s when the rod reached the outlet (centre x = %.4g m, channel L = %.4g m), "
+            "past the last passage measure (x_after = %.4g m)" % (rows[-1]["t"], x_end, sc["channel"]["L"], x_after))
+
+
+def salvage(build, work, tag):
+    """Records a case that stopped at the outlet without running it again:
+    CPU from rodIbFoam's own ExecutionTime, wall from its logs' times."""
+    case_dir = os.path.join(work, tag)
+    with open(scene_path(tag)) as f:
+        sc = json.load(f)
+    note = reached_outlet(case_dir, sc)
+    if note is None:
+        sys.exit("run_series.py salvage: %s did not carry the rod to the outlet; run it again" % case_dir)
+    log_path = os.path.join(case_dir, "log.rodIbFoam")
+    cpu = [float(l.split("=")[1].split()[0]) for l in open(log_path) if l.startswith("ExecutionTime")][-1]
+    wall = os.path.getmtime(log_path) - os.path.getmtime(os.path.join(case_dir, "log.blockMesh"))
+    os.environ["RODIBFOAM"] = os.path.join(build, "calibration", "rodIbFoam")  # the binary that ran it
+    meta = collect(case_dir, tag, sc, cpu, wall, note + "; CPU = rodIbFoam's ExecutionTime, wall from the logs' times")
+    print("%s: recorded, %d intervals, %.0f s CPU, %.0f s wall" % (tag, meta["coupling_intervals"], cpu, wall))
+
+
+def collect(case_dir, tag, sc, cpu, wall, note=None):
     out = os.path.join(HERE, tag)
     os.makedirs(out, exist_ok=True)
     raw = os.path.join(case_dir, "postProcessing", "rodIbFoam", "rodMeasures.csv")
@@ -92,7 +129,7 @@ def collect(case_dir, tag, sc, cpu, wall):
             "commit": subprocess.run(["git", "-C", ROOT, "rev-parse", "HEAD"], capture_output=True,
                                      text=True).stdout.strip(),
             "note": "CPU of rodIbFoam with its coupled LIGGGHTS (+ mesh tools), one core, nice -n 19, on a machine "
-                    "shared with other jobs"}
+                    "shared with other jobs" + ("; " + note if note else "")}
     with open(os.path.join(out, "resolved_run.json"), "w") as f:
         json.dump(meta, f, indent=1)
     return meta
@@ -114,9 +151,12 @@ def run_case(build, work, case, p):
                                                      case_dir), flush=True)
     rc, cpu, wall = passage_run.timed(["nice", "-n", "19", os.path.join(case_dir, "Allrun")], case_dir,
                                       dict(os.environ))
+    note = None
     if rc != 0:
-        sys.exit("%s failed (%s):\n%s" % (tag, case_dir, open(os.path.join(case_dir, "log.rodIbFoam")).read()[-3000:]))
-    meta = collect(case_dir, tag, sc, cpu, wall)
+        note = reached_outlet(case_dir, sc)
+        if note is None:
+            sys.exit("%s failed (%s):\n%s" % (tag, case_dir, open(os.path.join(case_dir, "log.rodIbFoam")).read()[-3000:]))
+    meta = collect(case_dir, tag, sc, cpu, wall, note)
     print("%s: recorded, %d intervals, %.0f s CPU, %.0f s wall" % (tag, meta["coupling_intervals"], cpu, wall),
           flush=True)
 
@@ -199,7 +239,7 @@ def plot(series, path):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("action", choices=("run", "compare", "status"))
+    ap.add_argument("action", choices=("run", "compare", "status", "salvage"))
     ap.add_argument("build", nargs="?")
     ap.add_argument("--work", default="/tmp/hsrod_passage_series")
     ap.add_argument("--only", help="run only this case tag")
@@ -211,6 +251,11 @@ def main():
         return
     if not a.build:
         sys.exit("run_series.py %s: BUILD_DIR is required" % a.action)
+    if a.action == "salvage":
+        if not a.only:
+            sys.exit("run_series.py salvage: --only TAG is required")
+        salvage(os.path.abspath(a.build), os.path.abspath(a.work), a.only)
+        return
     build, work = os.path.abspath(a.build), os.path.abspath(a.work)
     os.makedirs(work, exist_ok=True)
     if a.action == "run":

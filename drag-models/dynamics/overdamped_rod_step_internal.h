@@ -215,7 +215,7 @@ struct OverdampedRodSolver::Workspace {
   const Eigen::VectorXd& solve_sparse(const OverdampedRod& rod, const RodDrag& drag, double dt);
   bool solve_kept(Eigen::VectorXd& b) const;  // b <- A^-1 b with the kept factors; false if none are kept
   bool fits_groups() const;
-  void factorize_sparse();
+  bool factorize_sparse();
 
   // Block elimination (block_tridiagonal_solve.cpp).
   void solve_banded(int n);

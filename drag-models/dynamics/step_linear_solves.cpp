@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <type_traits>
 
 namespace hsrod {
@@ -200,7 +201,15 @@ const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_sparse(const Overda
   });
   matrix.resize(ndof, ndof);
   matrix.setFromTriplets(triplets.begin(), triplets.end());
-  factorize_sparse();
+  if (!factorize_sparse()) {
+    // Singular, or overflowed by a diverging contact iterate: Eigen's solve
+    // would read sizes from the failed factors. A non-finite update makes
+    // the step guard refuse this trial and take smaller substeps.
+    dy.setConstant(ndof, std::numeric_limits<double>::quiet_NaN());
+    kept = Kept::none;
+    ++statistics.sparse_steps;
+    return dy;
+  }
   dy = lu.solve(rhs);
   kept = Kept::sparse;
   ++statistics.sparse_steps;
@@ -228,8 +237,9 @@ bool OverdampedRodSolver::Workspace::fits_groups() const {
   return true;
 }
 
-// Factorises `matrix`, analysing its pattern only when it changed.
-void OverdampedRodSolver::Workspace::factorize_sparse() {
+// Factorises `matrix`, analysing its pattern only when it changed; false
+// when the factorisation failed.
+bool OverdampedRodSolver::Workspace::factorize_sparse() {
   const int outer_size = static_cast<int>(matrix.outerSize()) + 1;
   const int nonzeros = static_cast<int>(matrix.nonZeros());
   const bool same_pattern =
@@ -244,6 +254,7 @@ void OverdampedRodSolver::Workspace::factorize_sparse() {
     ++analyses;
   }
   lu.factorize(matrix);
+  return lu.info() == Eigen::Success;
 }
 
 }  // namespace hsrod

@@ -99,13 +99,11 @@ void FixRodImplicit::forget_rods(const std::vector<int> &molecules) {
     census_.forget(mol);
     held_rods_.erase(mol);
     contacts_by_rod_.erase(mol);
-    const auto solver = solvers_by_rod_.find(mol);
-    if (solver != solvers_by_rod_.end()) {
-      hsrod::accumulate(retired_statistics_, solver->second.statistics());  // the run's cost report keeps them
-      solvers_by_rod_.erase(solver);
+    const auto work = work_by_rod_.find(mol);
+    if (work != work_by_rod_.end()) {
+      hsrod::accumulate(retired_statistics_, work->second.solver.statistics());  // the run's cost report keeps them
+      work_by_rod_.erase(work);
     }
-    guards_by_rod_.erase(mol);
-    scratch_by_rod_.erase(mol);
     stepped_rods_.erase(std::remove(stepped_rods_.begin(), stepped_rods_.end(), mol), stepped_rods_.end());
   }
   // Joint solvers of clusters with a removed rod: retired as the next step

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "hydro/model_registry.h"
 #include "scene_crosscheck.h"
@@ -80,6 +81,44 @@ Worst held_out_worst(const std::string& role, bool images) {
   return held_out_worst_of(role, images ? "nonlocal+images" : "nonlocal");
 }
 
+
+// The built-in law `built` is the fit of `level` these checks read.
+void expect_built_in_is_the_fit(const std::string& level, const hsrod::WallProximityLaw& built) {
+  const hsrod::WallProximityLaw fit = fitted_law(level);
+  EXPECT_TRUE(built.active);
+  const double fitted[] = {fit.normal, fit.along, fit.screening, fit.normal_row_gain, fit.along_row_gain,
+                           fit.normal_held, fit.along_held, fit.squeeze, fit.squeeze_held};
+  const double shipped[] = {built.normal, built.along, built.screening, built.normal_row_gain, built.along_row_gain,
+                            built.normal_held, built.along_held, built.squeeze, built.squeeze_held};
+  for (int k = 0; k < hsrod::WallProximityLaw::kParameters; ++k) EXPECT_DOUBLE_EQ(shipped[k], fitted[k]) << k;
+}
+
+// The registry's nonlocal with `reflection` gives the loads of the checked
+// `level` (its fitted law on top), case by case, on the held-out cases of `roles`.
+void expect_registered_is_the_checked_model(const std::string& level, hsrod::WallReflection reflection,
+                                            const std::vector<std::string>& roles) {
+  const auto table = hsrod::ConfinementTable::default_table();
+  hsrod::WallProximityCalibration wall = hsrod::WallProximityCalibration::off();
+  wall.nonlocal = fitted_law(level);
+  hsrod::ModelOptions options;
+  options.wall_reflection = reflection;
+  int cases = 0;
+  for (const SceneCase& c : hsrod::calib::read_scene_cases(kData + "resolved_near_wall_per_sphere.csv")) {
+    if (std::find(roles.begin(), roles.end(), c.role) == roles.end()) continue;
+    ++cases;
+    const auto checked = hsrod::calib::scene_forces(level, c, table, hsrod::NearFieldCalibration::built_in(), wall);
+    const auto model = hsrod::make_hydrodynamic_model("nonlocal", {c.mu, c.gap_height(), c.d}, table, options);
+    const hsrod::calib::SceneLoad load = hsrod::calib::scene_load(c);
+    hsrod::RodDrag drag;
+    model->evaluate(load.rod, *load.flow, drag);
+    const Eigen::VectorXd f = drag.forces(load.velocities) / load.force_scale;
+    for (std::size_t i = 0; i < checked.size(); ++i)
+      EXPECT_LT((f.segment<2>(3 * i) - checked[i]).norm(), 1e-12 * (1.0 + checked[i].norm()))
+          << c.name << " " << c.load << " " << i;
+  }
+  EXPECT_GT(cases, 0);
+}
+
 }  // namespace
 
 TEST(calibration_WallImages, LevelThreeWithImagesIsWithinTenPercentOfHeldOutRowsOneDiameterFromAWall) {
@@ -107,38 +146,14 @@ TEST(calibration_WallImages, DISABLED_LevelThreeWithImagesIsWithinTenPercentOfHe
 // The law fix hele_shaw/drag applies with `wall_reflection images`
 // (hydro/wall_images_fit.cpp) is the fit these checks read.
 TEST(calibration_WallImages, BuiltInLawIsTheFit) {
-  const hsrod::WallProximityLaw fit = fitted_law("nonlocal+images"), built = hsrod::wall_proximity_with_images();
-  EXPECT_TRUE(built.active);
-  const double fitted[] = {fit.normal, fit.along, fit.screening, fit.normal_row_gain, fit.along_row_gain,
-                           fit.normal_held, fit.along_held, fit.squeeze, fit.squeeze_held};
-  const double shipped[] = {built.normal, built.along, built.screening, built.normal_row_gain, built.along_row_gain,
-                            built.normal_held, built.along_held, built.squeeze, built.squeeze_held};
-  for (int k = 0; k < hsrod::WallProximityLaw::kParameters; ++k) EXPECT_DOUBLE_EQ(shipped[k], fitted[k]) << k;
+  expect_built_in_is_the_fit("nonlocal+images", hsrod::wall_proximity_with_images());
 }
 
 // ... and the model the fix builds (the registry's nonlocal with the images
 // option) gives the loads checked above, case by case.
 TEST(calibration_WallImages, RegisteredLevelThreeWithImagesIsTheCheckedModel) {
-  const auto table = hsrod::ConfinementTable::default_table();
-  hsrod::WallProximityCalibration wall = hsrod::WallProximityCalibration::off();
-  wall.nonlocal = fitted_law("nonlocal+images");
-  hsrod::ModelOptions options;
-  options.wall_reflection = hsrod::WallReflection::images;
-  int cases = 0;
-  for (const SceneCase& c : hsrod::calib::read_scene_cases(kData + "resolved_near_wall_per_sphere.csv")) {
-    if (c.role != "wall_heldout" && c.role != "pore_heldout") continue;
-    ++cases;
-    const auto checked = hsrod::calib::scene_forces("nonlocal+images", c, table,
-                                                    hsrod::NearFieldCalibration::built_in(), wall);
-    const auto model = hsrod::make_hydrodynamic_model("nonlocal", {c.mu, c.gap_height(), c.d}, table, options);
-    const hsrod::calib::SceneLoad load = hsrod::calib::scene_load(c);
-    hsrod::RodDrag drag;
-    model->evaluate(load.rod, *load.flow, drag);
-    const Eigen::VectorXd f = drag.forces(load.velocities) / load.force_scale;
-    for (std::size_t i = 0; i < checked.size(); ++i)
-      EXPECT_LT((f.segment<2>(3 * i) - checked[i]).norm(), 1e-12 * (1.0 + checked[i].norm())) << c.name << " " << c.load << " " << i;
-  }
-  EXPECT_GT(cases, 0);
+  expect_registered_is_the_checked_model("nonlocal+images", hsrod::WallReflection::images,
+                                         {"wall_heldout", "pore_heldout"});
 }
 
 // Level 3 with the multiple reflections between walls and cylinders
@@ -163,35 +178,11 @@ TEST(calibration_WallReflections, LevelThreeWithReflectionsIsWithinTenPercentOfH
 }
 
 TEST(calibration_WallReflections, BuiltInLawIsTheFit) {
-  const hsrod::WallProximityLaw fit = fitted_law("nonlocal+reflections"), built = hsrod::wall_proximity_with_reflections();
-  EXPECT_TRUE(built.active);
-  const double fitted[] = {fit.normal, fit.along, fit.screening, fit.normal_row_gain, fit.along_row_gain,
-                           fit.normal_held, fit.along_held, fit.squeeze, fit.squeeze_held};
-  const double shipped[] = {built.normal, built.along, built.screening, built.normal_row_gain, built.along_row_gain,
-                            built.normal_held, built.along_held, built.squeeze, built.squeeze_held};
-  for (int k = 0; k < hsrod::WallProximityLaw::kParameters; ++k) EXPECT_DOUBLE_EQ(shipped[k], fitted[k]) << k;
+  expect_built_in_is_the_fit("nonlocal+reflections", hsrod::wall_proximity_with_reflections());
 }
 
 // ... and the registry's nonlocal with `reflections` is the model checked above.
 TEST(calibration_WallReflections, RegisteredLevelThreeWithReflectionsIsTheCheckedModel) {
-  const auto table = hsrod::ConfinementTable::default_table();
-  hsrod::WallProximityCalibration wall = hsrod::WallProximityCalibration::off();
-  wall.nonlocal = fitted_law("nonlocal+reflections");
-  hsrod::ModelOptions options;
-  options.wall_reflection = hsrod::WallReflection::reflections;
-  int cases = 0;
-  for (const SceneCase& c : hsrod::calib::read_scene_cases(kData + "resolved_near_wall_per_sphere.csv")) {
-    if (c.role != "pore_heldout") continue;
-    ++cases;
-    const auto checked = hsrod::calib::scene_forces("nonlocal+reflections", c, table,
-                                                    hsrod::NearFieldCalibration::built_in(), wall);
-    const auto model = hsrod::make_hydrodynamic_model("nonlocal", {c.mu, c.gap_height(), c.d}, table, options);
-    const hsrod::calib::SceneLoad load = hsrod::calib::scene_load(c);
-    hsrod::RodDrag drag;
-    model->evaluate(load.rod, *load.flow, drag);
-    const Eigen::VectorXd f = drag.forces(load.velocities) / load.force_scale;
-    for (std::size_t i = 0; i < checked.size(); ++i)
-      EXPECT_LT((f.segment<2>(3 * i) - checked[i]).norm(), 1e-12 * (1.0 + checked[i].norm())) << c.name << " " << i;
-  }
-  EXPECT_GT(cases, 0);
+  expect_registered_is_the_checked_model("nonlocal+reflections", hsrod::WallReflection::reflections,
+                                         {"pore_heldout"});
 }

@@ -50,7 +50,8 @@ Scenes and what each error is measured against:
     numerical uncertainty, the change of each measure over the last halving
     of its CFD step (and of its mesh where a finer run is recorded:
     resolved_uncertainty.json). Level 3 with the walls' images
-    (wall_reflection images) is a row of its own ("3 + images").
+    (wall_reflection images) and with their reflections (wall_reflection
+    reflections) are rows of their own ("3 + images", "3 + reflections").
 
   Near wall (time_vs_error_near_wall.py): static loads 1 d from a side wall
     and from a pore cylinder against the held-out resolved near-wall cases.
@@ -213,8 +214,9 @@ def coupled_passage(build, runs, levels):
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         env = dict(os.environ, HSROD_CACHE_DIR=os.path.join(tmp, "cache"))
-        # level 3 with the walls' images (wall_reflection images) beside the levels as shipped
-        variants = [(m, lv, "none") for m, lv in levels] + [("nonlocal", "3 + images", "images")]
+        # level 3 with the walls' images or their reflections (wall_reflection) beside the levels as shipped
+        variants = [(m, lv, "none") for m, lv in levels] + [("nonlocal", "3 + images", "images"),
+                                                            ("nonlocal", "3 + reflections", "reflections")]
         for model, level, reflection in variants:
             out = os.path.join(tmp, "%s_%s.csv" % (model, reflection))
             cmd = [os.path.join(build, "hsrod"), "-in", os.path.join(PASSAGE, "in.passage"), "-var", "model", model,
@@ -266,7 +268,8 @@ def plot(rows, path):
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(7.5, 5))
     marks = {"Hele-Shaw": "o", "pore": "s", "coupled passage": "^", "near wall": "D"}
-    colours = {1: "tab:blue", 2: "tab:orange", 3: "tab:green", "3 + images": "tab:olive", 4: "tab:red",
+    colours = {1: "tab:blue", 2: "tab:orange", 3: "tab:green", "3 + images": "tab:olive", "3 + reflections": "tab:cyan",
+               4: "tab:red",
                "resolved": "black", "stock": "grey"}
     floor = 1e-4
     for r in rows:

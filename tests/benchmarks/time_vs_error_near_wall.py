@@ -27,7 +27,8 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 CASES = os.path.join(ROOT, "calibration", "data", "resolved_near_wall_per_sphere.csv")
 RESULTS = os.path.join(ROOT, "calibration", "campaign", "near-wall", "results")
 # (crosscheck level name, level shown in the table)
-NEAR_WALL_LEVELS = (("local", 2), ("nonlocal", 3), ("nonlocal+images", "3 + images"), ("twoway", 4))
+NEAR_WALL_LEVELS = (("local", 2), ("nonlocal", 3), ("nonlocal+images", "3 + images"),
+                    ("nonlocal+reflections", "3 + reflections"), ("twoway", 4))
 
 
 def _rows(path):

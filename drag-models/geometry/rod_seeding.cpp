@@ -41,6 +41,12 @@ void check_request(const ChannelGeometry& planform, const RodSeedingRequest& r) 
     throw std::invalid_argument("min_gap must be a finite number >= 0 m, got " + number(r.min_gap));
   if (r.angle && !std::isfinite(*r.angle)) throw std::invalid_argument("angle must be finite");
   if (r.max_trials_per_rod < 1) throw std::invalid_argument("max_trials_per_rod must be >= 1");
+  if (!(r.jitter_position >= 0.0) || !std::isfinite(r.jitter_position) || !(r.jitter_angle >= 0.0) ||
+      !(r.jitter_angle <= 0.5 * kPi))
+    throw std::invalid_argument("jitter must be a position >= 0 m and an angle of 0 to 90 degrees, got " +
+                                number(r.jitter_position) + " m, " + number(r.jitter_angle * 180.0 / kPi) + " deg");
+  if ((r.jitter_position > 0.0 || r.jitter_angle > 0.0) && r.layout != SeedingLayout::lattice)
+    throw std::invalid_argument("jitter needs layout lattice (random rods are random already)");
   const bool whole = r.x_min == 0.0 && r.x_max == 0.0;
   if (!whole && !(r.x_min >= planform.x_lo() && r.x_max <= planform.x_hi() && r.x_min < r.x_max))
     throw std::invalid_argument("region x " + number(r.x_min) + " .. " + number(r.x_max) +
@@ -187,15 +193,32 @@ std::vector<SeededRod> seed_lattice(const ChannelGeometry& planform, const RodSe
     (static_cast<int>(sites(mid).size()) >= r.rods ? lo : hi) = mid;
   }
   std::vector<SeededRod> all = sites(lo), out;
-  for (const SeededRod& rod : all) {
+  const bool jittered = r.jitter_position > 0.0 || r.jitter_angle > 0.0;
+  std::mt19937_64 rng(r.seed);
+  std::uniform_real_distribution<double> shift(-r.jitter_position, r.jitter_position),
+      turn(-r.jitter_angle, r.jitter_angle);
+  for (const SeededRod& site : all) {
     if (static_cast<int>(out.size()) == r.rods) break;
-    const Eigen::Vector2d a = rod.centre - half * t, b = rod.centre + half * t;
-    if (!placed.clear(a, b, d, r.min_gap)) continue;
-    placed.add(a, b, d);
-    out.push_back(rod);
+    // The site itself, or the first jittered draw that is clear.
+    for (int trial = 0; trial < (jittered ? r.max_trials_per_rod : 1); ++trial) {
+      SeededRod rod = site;
+      if (jittered) {
+        rod.centre += Eigen::Vector2d(shift(rng), shift(rng));
+        rod.angle += turn(rng);
+        if (!clear_of_walls(planform, g, r, rod)) continue;
+      }
+      const Eigen::Vector2d ta = axis_of(rod.angle);
+      const Eigen::Vector2d a = rod.centre - half * ta, b = rod.centre + half * ta;
+      if (!placed.clear(a, b, d, r.min_gap)) continue;
+      placed.add(a, b, d);
+      out.push_back(rod);
+      break;
+    }
   }
   if (static_cast<int>(out.size()) < r.rods)
-    cannot_pack(planform, r, static_cast<int>(out.size()), "the lattice's free sites touch rods already there");
+    cannot_pack(planform, r, static_cast<int>(out.size()),
+                jittered ? "the lattice's free sites touch rods already there, or its pitch leaves no room for the jitter"
+                         : "the lattice's free sites touch rods already there");
   return out;
 }
 

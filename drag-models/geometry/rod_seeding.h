@@ -16,7 +16,10 @@
 //    (for needles much longer than thick it falls with the aspect ratio).
 //  - lattice: rods at one angle on a rectangular lattice spread evenly over
 //    the region (the largest pitch that holds all of them), sites that touch
-//    a wall or cylinder skipped.
+//    a wall or cylinder skipped; with a jitter, each rod then moved and
+//    turned at random within the jitter (seeded), redrawn until it is clear
+//    of the walls and of the rods before it: a seed set of lattices whose
+//    rows still arrive together.
 #pragma once
 
 #include "geometry/channel_geometry.h"
@@ -41,7 +44,9 @@ struct RodSeedingRequest {
   std::optional<double> angle;     // in-plane angle from the y axis [rad] (create_rod's alpha); random if empty
   std::uint64_t seed = 1;          // random layout: the sequence (same seed, same rods)
   double x_min = 0.0, x_max = 0.0; // the region along x to fill [m]; both 0: the whole planform
-  int max_trials_per_rod = 10000;  // random layout: failed trials in a row before giving up
+  int max_trials_per_rod = 10000;  // failed trials in a row before giving up (random, or a jittered site)
+  double jitter_position = 0.0;    // lattice: each rod moved by up to this in x and in y [m] (>= 0)
+  double jitter_angle = 0.0;       // lattice: and turned by up to this [rad] (0 to pi/2)
 };
 
 struct SeededRod {

@@ -43,10 +43,10 @@ namespace LAMMPS_NS {
 int parse_seeded_rods_keyword(Error *error, const char *style, int narg, char **arg, int iarg, SeededRodsSpec &a) {
   const char *key = arg[iarg];
   static const char *known[] = {"drag", "spheres", "diameter", "type", "density", "layout", "seed",
-                                "angle", "region", "min_gap", "spacing", "bond_type"};
+                                "angle", "region", "min_gap", "spacing", "bond_type", "jitter"};
   if (std::none_of(std::begin(known), std::end(known), [&](const char *k) { return std::strcmp(k, key) == 0; }))
     return 0;
-  const int count = std::strcmp(key, "region") == 0 ? 2 : 1;
+  const int count = std::strcmp(key, "region") == 0 || std::strcmp(key, "jitter") == 0 ? 2 : 1;
   if (iarg + count >= narg) {
     char msg[160];
     std::snprintf(msg, sizeof(msg), "Illegal %s command: %s expects %d value(s)", style, key, count);
@@ -92,6 +92,9 @@ int parse_seeded_rods_keyword(Error *error, const char *style, int narg, char **
     a.seeding.min_gap = parse_number(error, style, key, v);
   } else if (std::strcmp(key, "spacing") == 0) {
     a.seeding.spacing = parse_number(error, style, key, v);
+  } else if (std::strcmp(key, "jitter") == 0) {
+    a.seeding.jitter_position = parse_number(error, style, key, v);
+    a.seeding.jitter_angle = parse_number(error, style, key, arg[iarg + 2]) * hsrod::kPi / 180.0;
   } else {
     a.bond_type = parse_integer(error, style, key, v);
   }

@@ -80,8 +80,8 @@ FixRodInflow::FixRodInflow(LAMMPS *instance, int narg, char **arg)
       iarg += 2;
       continue;
     }
-    if (std::strcmp(key, "layout") == 0)
-      error->all(FLERR, "fix rod/inflow: layout is not a keyword here (rods are placed at random in the band)");
+    if (std::strcmp(key, "layout") == 0 || std::strcmp(key, "jitter") == 0)
+      error->all(FLERR, "fix rod/inflow: layout and jitter are not keywords here (rods are placed at random in the band)");
     if (std::strcmp(key, "region") == 0) have_region = true;
     const int used = parse_seeded_rods_keyword(error, kStyle, narg, arg, iarg, spec_);
     if (used == 0) {

@@ -119,6 +119,36 @@ TEST(RodSeeding, LatticeSpreadsRodsEvenlyAndSkipsTheCylinders) {
   EXPECT_LT(upstream, 20);
 }
 
+// A jittered lattice: every rod within the jitter of its lattice site and
+// angle, none overlapping or touching a wall, and each seed another set.
+TEST(RodSeeding, JitteredLatticeStaysClearAndWithinTheJitter) {
+  const ChannelGeometry g = pore_scene();
+  RodSeedingRequest r = ten_sphere_rods(24, SeedingLayout::lattice);
+  r.angle = 0.0;  // across the flow
+  const auto sites = seed_rods(g, r);
+  r.jitter_position = 3e-6;
+  r.jitter_angle = 10.0 * M_PI / 180.0;
+  const auto a = seed_rods(g, r);
+  r.seed = 2;
+  const auto b = seed_rods(g, r);
+  ASSERT_EQ(a.size(), 24u);
+  ASSERT_EQ(b.size(), 24u);
+  EXPECT_GE(smallest_rod_gap(a, r), r.min_gap * (1 - 1e-9));
+  EXPECT_GE(smallest_wall_gap(a, r, g), r.min_gap * (1 - 1e-9));
+  double moved = 0.0, turned = 0.0, apart = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    moved = std::max(moved, (a[k].centre - sites[k].centre).lpNorm<Eigen::Infinity>());
+    turned = std::max(turned, std::abs(a[k].angle - sites[k].angle));
+    apart = std::max(apart, (a[k].centre - b[k].centre).norm());
+  }
+  EXPECT_LE(moved, r.jitter_position);
+  EXPECT_LE(turned, r.jitter_angle);
+  EXPECT_GT(moved, 0.5 * r.jitter_position);  // jittered, not the sites themselves
+  EXPECT_GT(apart, 0.5 * r.jitter_position);  // another seed, other rods
+  r.layout = SeedingLayout::random;           // random rods take no jitter
+  EXPECT_THROW(seed_rods(g, r), std::invalid_argument);
+}
+
 TEST(RodSeeding, ExistingRodsAreKeptClearOf) {
   const ChannelGeometry g(200e-6, 60e-6, 20e-6);
   RodSeedingRequest r = ten_sphere_rods(30, SeedingLayout::random);

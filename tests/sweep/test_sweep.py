@@ -154,10 +154,11 @@ elif test == "workers":
     check(stable(serial) == stable(farm), "rows of 1 process and 4 workers are identical")
 
 elif test == "resume":
-    # Cases of 2000 steps (~0.1 s each): with 200 steps (~10 ms since the
-    # start-up lost its damped bond limit) the sweep could end between two
-    # polls below, before the kill.
-    GRID = GRID + ["--var", "steps", "2000"]
+    # Cases of 100 000 steps of 20 ns (~0.4 s each; the rod stays in the box,
+    # where a held rod would make steps free): the sweep must still be
+    # running when half its rows are on disk. 2000-step cases (~0.03 s since
+    # the steps got faster) let all 12 end between two polls, before the kill.
+    GRID = GRID + ["--var", "steps", "100000", "--var", "dt", "2e-8", "--var", "every", "10000"]
     run("reference.csv", 1, GRID)
     reference = stable(rows("reference.csv"))
     out = os.path.join(work, "killed.csv")

@@ -12,6 +12,7 @@
 #include "fix_hele_shaw_drag.h"
 #include "fix_rod_bonds.h"
 #include "keyword_parsing.h"
+#include "rod_gather.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -213,12 +214,7 @@ int FixRodInflow::rods_in_band() {
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & groupbit) mine.insert(mine.end(), {static_cast<double>(atom->molecule[i]), atom->x[i][0]});
-  int count = static_cast<int>(mine.size());
-  std::vector<int> counts(comm->nprocs), offsets(comm->nprocs, 0);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < comm->nprocs; p++) offsets[p] = offsets[p - 1] + counts[p - 1];
-  std::vector<double> all(offsets.back() + counts.back());
-  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, world);
+  const std::vector<double> all = allgather_all(world, comm->nprocs, mine);
   std::map<int, std::pair<double, int>> sums;  // molecule -> (sum of x [m], spheres)
   for (std::size_t k = 0; k + 1 < all.size(); k += 2) {
     auto &sum = sums[static_cast<int>(all[k])];

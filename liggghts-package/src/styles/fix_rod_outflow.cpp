@@ -10,6 +10,7 @@
 
 #include "fix_rod_outcome.h"
 #include "keyword_parsing.h"
+#include "rod_gather.h"
 #include "rod_removal.h"
 
 #include "atom.h"
@@ -128,13 +129,8 @@ std::vector<int> FixRodOutflow::rods_past_outlet() {
       mine.push_back(atom->molecule[i]);
   std::sort(mine.begin(), mine.end());
   mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
-  int count = static_cast<int>(mine.size());
-  std::vector<int> counts(comm->nprocs), offsets(comm->nprocs, 0);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < comm->nprocs; p++) offsets[p] = offsets[p - 1] + counts[p - 1];
-  std::vector<int> candidates(offsets.back() + counts.back());
+  std::vector<int> candidates = allgather_all(world, comm->nprocs, mine);
   if (candidates.empty()) return candidates;
-  MPI_Allgatherv(mine.data(), count, MPI_INT, candidates.data(), counts.data(), offsets.data(), MPI_INT, world);
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   // A candidate with any sphere short of the plane, on any processor, stays.

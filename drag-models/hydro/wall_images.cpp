@@ -68,18 +68,51 @@ Eigen::Matrix2d circle_map(Complex q) {
   return t;
 }
 
+// 1 / sinh^2(s), s = a + i b, in real arithmetic from E = exp(-2|a|),
+// 1 - E and sin b, cos b (given, so that a caller can form them by angle
+// addition from per-point phases):
+//     1 / sinh^2 s = 4E [(1-E)^2 cos 2b - 4E sin^2 b - i sgn(a) (1-E^2) sin 2b] / [(1-E)^2 + 4E sin^2 b]^2,
+// from sinh^2 s = (cosh 2s - 1) / 2 and |sinh s|^2 = (cosh 2a - cos 2b) / 2.
+// Both brackets are sums of terms of one sign near s = 0 (no cancellation),
+// and E -> 0 far from the origin (no overflow), so it holds for every s != 0.
+struct Decay {
+  double e, one_minus_e;  // E = exp(-2|a|) and 1 - E [-]
+  explicit Decay(double a) {
+    const double two_a = 2.0 * std::abs(a);
+    // 1 - E without cancellation for small |a|
+    one_minus_e = two_a < 0.5 ? -std::expm1(-two_a) : 1.0 - std::exp(-two_a);
+    e = 1.0 - one_minus_e;
+  }
+};
+
+Complex inverse_sinh_squared(double a, const Decay& d, double sin_b, double cos_b) {
+  const double e = d.e, ome2 = d.one_minus_e * d.one_minus_e;
+  const double sin2_b = sin_b * sin_b, sin_2b = 2.0 * sin_b * cos_b, cos_2b = 1.0 - 2.0 * sin2_b;
+  const double den = ome2 + 4.0 * e * sin2_b;
+  const double f = 4.0 * e / (den * den);
+  const double im = f * d.one_minus_e * (1.0 + e) * sin_2b;
+  return {f * (ome2 * cos_2b - 4.0 * e * sin2_b), a < 0.0 ? im : -im};
+}
+
+// 1 / w^2 without the library's complex division [1/m^2].
+Complex inverse_square(Complex w) {
+  const double n = std::norm(w);
+  const Complex c = std::conj(w);
+  return c * c / (n * n);
+}
+
 // (pi / 2W)^2 / sinh^2(pi w / 2W) - 1 / w^2 [1/m^2], the lattice sum of
-// 1 / (w - 2 k W i)^2 over k without k = 0 (Laurent series near w = 0).
+// 1 / (w - 2 k W i)^2 over k without k = 0 (Laurent series near w = 0,
+// where the two terms cancel).
 Complex lattice_without_origin(Complex w, double width) {
   const double k = kPi / (2.0 * width);
   const Complex s = k * w;
-  if (std::abs(s) < 1e-2) {
+  if (std::norm(s) < 1e-4) {
     const Complex s2 = s * s;
     return k * k * (-1.0 / 3.0 + s2 / 15.0 - 2.0 * s2 * s2 / 189.0);
   }
-  if (std::abs(s.real()) > 300.0) return -1.0 / (w * w);  // 1 / sinh^2 underflows
-  const Complex sh = std::sinh(s);
-  return k * k / (sh * sh) - 1.0 / (w * w);
+  return k * k * inverse_sinh_squared(s.real(), Decay(s.real()), std::sin(s.imag()), std::cos(s.imag())) -
+         inverse_square(w);
 }
 
 // u - i v = c (A f + B conj f) as a 2x2 tensor per unit (F_x, F_y), c = H / (24 pi mu).
@@ -91,14 +124,26 @@ Eigen::Matrix2d complex_tensor(Complex a, Complex b, double viscosity, double ga
   return m;
 }
 
-// The dipoles of an image at z0 [m] and of all its mirror images in the
-// strip's walls, per unit image force [m/(N s)].
-Eigen::Matrix2d strip_lattice(double y_lo, double width, const Eigen::Vector2d& x_target, const Eigen::Vector2d& at,
-                              double viscosity, double gap_height) {
-  const Complex z(x_target.x(), x_target.y()), z0(at.x(), at.y()), z0m(at.x(), 2.0 * y_lo - at.y());
-  const Complex w = z - z0, wm = z - z0m;
-  return complex_tensor(lattice_without_origin(w, width) + 1.0 / (w * w),
-                        lattice_without_origin(wm, width) + 1.0 / (wm * wm), viscosity, gap_height);
+// (cos, sin) of pi (y - y_lo) / (2W): the phase of a point in the strip's
+// lattice, from which the lattice's field between two points is formed by
+// angle addition (no transcendental function per pair but one exponential).
+LatticePhase lattice_phase(double y, double y_lo, double width) {
+  const double b = kPi / (2.0 * width) * (y - y_lo);
+  return {std::cos(b), std::sin(b)};
+}
+
+// The dipoles of an image at `at` [m] (phase p) and of all its mirror images
+// in the strip's walls, per unit image force [m/(N s)], at x_target (phase t):
+// sum_k 1 / (w - 2kWi)^2 = (pi / 2W)^2 / sinh^2(pi w / 2W) for the image's
+// lattice (w = z - z0) and its mirror's (w' = z - z0', z0' mirrored in y_lo),
+// whose imaginary parts pi Im(w) / 2W are t - p and t + p.
+Eigen::Matrix2d strip_lattice(double width, const Eigen::Vector2d& x_target, const LatticePhase& t,
+                              const Eigen::Vector2d& at, const LatticePhase& p, double viscosity, double gap_height) {
+  const double k = kPi / (2.0 * width), a = k * (x_target.x() - at.x());
+  const Decay d(a);
+  const double cc = t.cos * p.cos, ss = t.sin * p.sin, sc = t.sin * p.cos, cs = t.cos * p.sin;
+  return complex_tensor(k * k * inverse_sinh_squared(a, d, sc - cs, cc + ss),
+                        k * k * inverse_sinh_squared(a, d, sc + cs, cc - ss), viscosity, gap_height);
 }
 
 }  // namespace
@@ -113,7 +158,7 @@ Eigen::Matrix2d strip_lattice_remainder(double y_lo, double width, const Eigen::
   const Complex hi = z0m + Complex(0.0, 2.0 * width);
   const Complex a = lattice_without_origin(z - z0, width);
   Complex b = lattice_without_origin(z - z0m, width);
-  b -= 1.0 / ((z - hi) * (z - hi));
+  b -= inverse_square(z - hi);
   return complex_tensor(a, b, viscosity, gap_height);
 }
 
@@ -146,20 +191,20 @@ void circle_images_of_lattice(Complex z, const Eigen::Matrix2d& t, const ZCylind
   const int k_hi = static_cast<int>(std::floor((reach - w0.imag()) / (2.0 * width)));
   for (int k = std::min(k_lo, 0); k <= std::max(k_hi, 0); ++k) {
     const Complex zk = w0 + Complex(0.0, 2.0 * k * width);
-    if (k != 0) far -= 1.0 / (zk * zk);
-    if ((k == 0 && skip_own) || std::abs(zk) <= c.radius) continue;
-    const Complex zc = std::conj(zk);
-    out.push_back({{Eigen::Vector2d(c.center_x + (a2 / zc).real(), c.center_y + (a2 / zc).imag()),
-                    circle_map(-a2 / (zc * zc)) * t, false, true},
+    if (k != 0) far -= inverse_square(zk);
+    if ((k == 0 && skip_own) || std::norm(zk) <= a2) continue;
+    // image point a^2 / conj(zk), force map q = -a^2 / conj(zk)^2
+    const Complex inv = zk / std::norm(zk);  // 1 / conj(zk)
+    out.push_back({{Eigen::Vector2d(c.center_x + a2 * inv.real(), c.center_y + a2 * inv.imag()),
+                    circle_map(-a2 * inv * inv) * t, false, true},
                    reflector});
   }
   out.push_back({{Eigen::Vector2d(c.center_x, c.center_y), circle_map(-a2 * std::conj(far)) * t, false, true}, reflector});
 }
 
-}  // namespace
-
-ImageSeries reflected_force_images(const ChannelGeometry& walls, const Eigen::Vector2d& x_source,
-                                   const ReflectionControl& control) {
+// The series of reflected_force_images without the images' lattice phases.
+ImageSeries reflection_series(const ChannelGeometry& walls, const Eigen::Vector2d& x_source,
+                              const ReflectionControl& control) {
   ImageSeries series;
   series.source = x_source;
   series.y_lo = walls.y_lo();
@@ -211,14 +256,28 @@ ImageSeries reflected_force_images(const ChannelGeometry& walls, const Eigen::Ve
   return series;
 }
 
+}  // namespace
+
+ImageSeries reflected_force_images(const ChannelGeometry& walls, const Eigen::Vector2d& x_source,
+                                   const ReflectionControl& control) {
+  ImageSeries series = reflection_series(walls, x_source, control);
+  series.phases.reserve(series.images.size());
+  for (const ForceImage& image : series.images)
+    series.phases.push_back(lattice_phase(image.position.y(), series.y_lo, series.width));
+  return series;
+}
+
 Eigen::Matrix2d image_mobility(const ImageSeries& series, const Eigen::Vector2d& x_target, double viscosity,
                                double gap_height) {
   Eigen::Matrix2d m = strip_lattice_remainder(series.y_lo, series.width, x_target, series.source, viscosity, gap_height);
-  for (const ForceImage& image : series.images) {
+  const LatticePhase t = lattice_phase(x_target.y(), series.y_lo, series.width);
+  for (std::size_t j = 0; j < series.images.size(); ++j) {
+    const ForceImage& image = series.images[j];
     const Eigen::Vector2d r = x_target - image.position;
     if (r.squaredNorm() <= 0.0) continue;
     if (image.strip_lattice)
-      m += strip_lattice(series.y_lo, series.width, x_target, image.position, viscosity, gap_height) * image.map;
+      m += strip_lattice(series.width, x_target, t, image.position, series.phases[j], viscosity, gap_height) *
+           image.map;
     else
       m += (image.full_brinkman ? brinkman_green_function(r, viscosity, gap_height)
                                 : hele_shaw_dipole(r, viscosity, gap_height)) *

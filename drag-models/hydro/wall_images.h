@@ -96,12 +96,20 @@ struct ReflectionControl {
   int max_images = 20000;     // stop (not converged) beyond this many images, e.g. in a dense pillar array
 };
 
+// (cos, sin) of pi (y - y_lo) / (2W) of a point at height y [m] in the strip
+// y_lo..y_lo + W [-]: the lattice sum between two points follows from theirs
+// by angle addition (wall_images.cpp, strip_lattice).
+struct LatticePhase {
+  double cos = 1.0, sin = 0.0;
+};
+
 // The multiple reflections of a force at x_source [m]: the source's two first
 // mirrors (full Brinkman), the rest of its strip lattice (closed form) and
 // the circle images, each with its strip lattice (strip_lattice).
 struct ImageSeries {
   Eigen::Vector2d source = Eigen::Vector2d::Zero();  // [m]
   std::vector<ForceImage> images;                     // explicit images
+  std::vector<LatticePhase> phases;                   // each image's lattice phase (LatticePhase)
   double y_lo = 0.0, width = 0.0;                     // the strip of the lattice [m]
   int generations = 0;                                // generations computed
   double last_weight = 0.0;                           // last generation's weight / the first's [-]

@@ -178,28 +178,46 @@ struct Head {
 // with `prune`, test_wall_reflections.cpp).
 constexpr double kGatherRadii = 12.0;
 
+// The series' cut of light images: a child lighter than `prune` (weight())
+// is dropped. |circle_map(q) t| = |q| |t| (circle_map(q) / |q| is
+// orthogonal), so a child's weight is known before its map is formed; only
+// those certainly below the cut (by a margin far above round-off) are not
+// formed, the rest are weighed exactly by the caller.
+struct Cut {
+  Eigen::Vector2d source;  // the series' source [m]
+  double width, prune;     // the strip's width [m], ReflectionControl::prune [-]
+  bool below(double q_abs, double t_norm, const Eigen::Vector2d& at) const {
+    constexpr double kMargin = 1.0 - 1e-9;  // round-off of weight() is ~1e-15
+    return q_abs * t_norm * width * width < kMargin * prune * (at - source).squaredNorm();
+  }
+};
+
 // The circle images in cylinder c of the lattice copies z + 2 k W i (map t)
 // of a head: the near copies one by one, the far ones gathered (closed-form
 // lattice sum minus the near terms). `skip_own`: the copy k = 0 is (the
 // mirror partner of) the head's own maker and is not reflected again.
 void circle_images_of_lattice(Complex z, const Eigen::Matrix2d& t, const ZCylinder& c, double width, bool skip_own,
-                              int reflector, std::vector<Head>& out) {
+                              int reflector, const Cut& cut, std::vector<Head>& out) {
   const Complex w0 = z - Complex(c.center_x, c.center_y);
   const double a2 = c.radius * c.radius, reach = kGatherRadii * c.radius;
+  const double t_norm = t.norm() / std::sqrt(2.0);  // as in weight()
   Complex far = lattice_without_origin(w0, width);  // sum over k != 0 of 1 / (w0 + 2kWi)^2
   const int k_lo = static_cast<int>(std::ceil((-reach - w0.imag()) / (2.0 * width)));
   const int k_hi = static_cast<int>(std::floor((reach - w0.imag()) / (2.0 * width)));
   for (int k = std::min(k_lo, 0); k <= std::max(k_hi, 0); ++k) {
     const Complex zk = w0 + Complex(0.0, 2.0 * k * width);
     if (k != 0) far -= inverse_square(zk);
-    if ((k == 0 && skip_own) || std::norm(zk) <= a2) continue;
+    const double n = std::norm(zk);
+    if ((k == 0 && skip_own) || n <= a2) continue;
     // image point a^2 / conj(zk), force map q = -a^2 / conj(zk)^2
-    const Complex inv = zk / std::norm(zk);  // 1 / conj(zk)
-    out.push_back({{Eigen::Vector2d(c.center_x + a2 * inv.real(), c.center_y + a2 * inv.imag()),
-                    circle_map(-a2 * inv * inv) * t, false, true},
-                   reflector});
+    const Complex inv = zk / n;  // 1 / conj(zk)
+    const Eigen::Vector2d at(c.center_x + a2 * inv.real(), c.center_y + a2 * inv.imag());
+    if (cut.below(a2 / n, t_norm, at)) continue;
+    out.push_back({{at, circle_map(-a2 * inv * inv) * t, false, true}, reflector});
   }
-  out.push_back({{Eigen::Vector2d(c.center_x, c.center_y), circle_map(-a2 * std::conj(far)) * t, false, true}, reflector});
+  const Eigen::Vector2d centre(c.center_x, c.center_y);
+  if (cut.below(a2 * std::abs(far), t_norm, centre)) return;
+  out.push_back({{centre, circle_map(-a2 * std::conj(far)) * t, false, true}, reflector});
 }
 
 // The series of reflected_force_images without the images' lattice phases.
@@ -218,6 +236,7 @@ ImageSeries reflection_series(const ChannelGeometry& walls, const Eigen::Vector2
     first += weight(series.images.back(), x_source, W);
   }
   const Eigen::Matrix2d flip = Eigen::Vector2d(1.0, -1.0).asDiagonal();
+  const Cut cut{x_source, W, control.prune};
   std::vector<Head> generation = {{{x_source, Eigen::Matrix2d::Identity(), false, true}, -1}}, next, children;
   for (int g = 1; g <= control.max_generations && !generation.empty(); ++g) {
     next.clear();
@@ -229,11 +248,11 @@ ImageSeries reflection_series(const ChannelGeometry& walls, const Eigen::Vector2
           const Eigen::Vector2d& p = h.image.position;
           // a wall's cylinder: one copy of each mirror pair in that wall (the
           // other's image is its mirror, in the same lattice); another cylinder: both sets
-          circle_images_of_lattice(Complex(p.x(), p.y()), h.image.map, c, W, r == h.reflector, r, children);
+          circle_images_of_lattice(Complex(p.x(), p.y()), h.image.map, c, W, r == h.reflector, r, cut, children);
           // (the mirror partner of a cylinder's own image is a wall's, so reflected in it)
           if (reflectors[r].wall < 0)
             circle_images_of_lattice(Complex(p.x(), 2.0 * walls.y_lo() - p.y()), flip * h.image.map, c, W, false, r,
-                                     children);
+                                     cut, children);
           for (const Head& child : children) {
             const double w = weight(child.image, x_source, W);
             if (w < control.prune) continue;

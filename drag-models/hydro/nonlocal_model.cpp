@@ -173,11 +173,12 @@ void NonlocalRodModel::add_wall_images(const RodGeometry& rod, const ChannelGeom
     const int last = wall_reflection_ == WallReflection::self_images ? i + 1 : n;
     for (int k = i; k < last; ++k) {
       const Eigen::Vector2d xk = rod.positions[k].head<2>();
-      // reciprocal to round-off (wall_images.h): symmetrised
-      const Eigen::Matrix2d g =
-          0.5 * scale *
-          (series.empty() ? image_mobility(walls, xi, xk, mu, H) + image_mobility(walls, xk, xi, mu, H).transpose()
-                          : image_mobility(series[k], xi, mu, H) + image_mobility(series[i], xk, mu, H).transpose());
+      // reciprocal to round-off (wall_images.h): symmetrised; the self-image
+      // (k = i) is one evaluation and its transpose
+      const Eigen::Matrix2d ik = series.empty() ? image_mobility(walls, xi, xk, mu, H) : image_mobility(series[k], xi, mu, H);
+      const Eigen::Matrix2d ki =
+          k == i ? ik : (series.empty() ? image_mobility(walls, xk, xi, mu, H) : image_mobility(series[i], xk, mu, H));
+      const Eigen::Matrix2d g = 0.5 * scale * (ik + ki.transpose());
       coupling.block<2, 2>(2 * i, 2 * k) += g;
       if (k != i) coupling.block<2, 2>(2 * k, 2 * i) += g.transpose();
       if (coupling_driving.size() == 0) continue;

@@ -92,6 +92,40 @@ TEST(WallReflections, StripLatticeRemainderEqualsTheDirectLatticeSum) {
   EXPECT_LT((at - near).norm(), 1e-3 * at.norm());
 }
 
+TEST(WallReflections, SeriesImageMobilityEqualsTheDirectLatticeSumOfItsImages) {
+  // image_mobility forms each circle image's strip lattice from per-point
+  // phases by angle addition and 1 / sinh^2 in real arithmetic; here the same
+  // images' lattices are summed copy by copy, k = -K..K. The omitted tail per
+  // image, ~sum_{|k|>K} 1 / (2kW)^2 ~ 1 / (4 K W^2), is 1.25e-5 of a W^-2
+  // term; the images' maps sum to O(1), so 1e-4 of the total bounds it.
+  const ChannelGeometry walls = throat(10.0 * kUm);
+  const double y_lo = 0.0, W = 36.0 * kUm, H = 10.0 * kUm;
+  const Eigen::Vector2d source(38.0 * kUm, 19.5 * kUm), target(44.5 * kUm, 15.0 * kUm);
+  const ImageSeries series = reflected_force_images(walls, source);
+  ASSERT_GT(series.images.size(), 40u);
+  const Eigen::Matrix2d flip = Eigen::Vector2d(1.0, -1.0).asDiagonal();
+  const int K = 20000;
+  Eigen::Matrix2d direct = Eigen::Matrix2d::Zero();
+  for (int k = -K; k <= K; ++k) {  // the source's lattice without itself and its two first mirrors
+    const Eigen::Vector2d own(source.x(), source.y() + 2.0 * k * W), mirrored(source.x(), 2.0 * y_lo - source.y() + 2.0 * k * W);
+    if (k != 0) direct += hele_shaw_dipole(target - own, kMu, H);
+    if (k != 0 && k != 1) direct += hele_shaw_dipole(target - mirrored, kMu, H) * flip;
+  }
+  for (const ForceImage& image : series.images) {
+    if (!image.strip_lattice) {
+      direct += brinkman_green_function(target - image.position, kMu, H) * image.map;
+      continue;
+    }
+    for (int k = -K; k <= K; ++k) {
+      const Eigen::Vector2d own(image.position.x(), image.position.y() + 2.0 * k * W);
+      const Eigen::Vector2d mirrored(image.position.x(), 2.0 * y_lo - image.position.y() + 2.0 * k * W);
+      direct += hele_shaw_dipole(target - own, kMu, H) * image.map + hele_shaw_dipole(target - mirrored, kMu, H) * flip * image.map;
+    }
+  }
+  const Eigen::Matrix2d closed = image_mobility(series, target, kMu, H);
+  EXPECT_LT((closed - direct).norm(), 1e-4 * closed.norm());
+}
+
 TEST(WallReflections, NoNormalVelocityThroughEitherThroatCylinderOrTheSideWalls) {
   const ChannelGeometry walls = throat(kThinGap);
   for (const Eigen::Vector2d& source : {Eigen::Vector2d(36.0 * kUm, 14.0 * kUm), Eigen::Vector2d(42.0 * kUm, 18.0 * kUm),

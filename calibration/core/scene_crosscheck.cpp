@@ -9,6 +9,7 @@
 #include "flow/make_background_flow.h"
 #include "hydro/hydrodynamic_model.h"
 #include "hydro/local_models.h"
+#include "hydro/rigid_rod_load.h"
 #include "level_crosscheck.h"
 #include "resolved_campaign.h"
 
@@ -24,6 +25,12 @@ double number(const CsvRow& r, const std::string& k) {
   return std::stod(it->second);
 }
 
+// An optional column: NaN when the table has none (tables written before it).
+double optional_number(const CsvRow& r, const std::string& k) {
+  const auto it = r.find(k);
+  return it == r.end() || it->second.empty() ? std::nan("") : std::stod(it->second);
+}
+
 ChannelGeometry channel_of(const SceneCase& c) {
   std::vector<ZCylinder> cylinders;
   if (c.geometry == "pore")
@@ -37,6 +44,7 @@ std::vector<SceneCase> read_scene_cases(const std::string& path) {
   std::map<std::pair<std::string, std::string>, SceneCase> cases;
   std::map<std::pair<std::string, std::string>, std::map<int, std::pair<Eigen::Vector2d, Eigen::Vector2d>>> loads;
   std::map<std::pair<std::string, std::string>, std::map<int, Eigen::Vector3d>> centres;
+  std::map<std::pair<std::string, std::string>, std::map<int, std::pair<double, double>>> torques;
   for (const CsvRow& r : read_csv_rows(path)) {
     if (number(r, "finest") != 1.0) continue;
     const auto key = std::make_pair(r.at("case"), r.at("load"));
@@ -60,6 +68,7 @@ std::vector<SceneCase> read_scene_cases(const std::string& path) {
     const int id = static_cast<int>(number(r, "sphere"));
     centres[key][id] = {number(r, "x"), number(r, "y"), number(r, "z")};
     loads[key][id] = {{number(r, "fx"), number(r, "fy")}, {number(r, "dfx"), number(r, "dfy")}};
+    torques[key][id] = {optional_number(r, "tz"), optional_number(r, "dtz")};
   }
   std::vector<SceneCase> out;
   for (auto& [key, c] : cases) {
@@ -70,6 +79,15 @@ std::vector<SceneCase> read_scene_cases(const std::string& path) {
       c.resolved.push_back(f.first);
       c.mesh_change.push_back(f.second);
     }
+    for (const auto& [id, t] : torques[key]) {
+      c.resolved_torque.push_back(t.first);
+      c.torque_mesh_change.push_back(t.second);
+    }
+    const bool turning = c.load == "rotation" || c.load == "orbit";
+    if (turning && c.geometry == "bent")
+      throw std::runtime_error(path + ": case " + c.name + ": load " + c.load + " needs a wall or pore channel");
+    if (!turning && c.load != "friction" && c.load != "driving")
+      throw std::runtime_error(path + ": case " + c.name + ": load must be friction, driving, rotation or orbit");
     out.push_back(c);
   }
   return out;
@@ -97,8 +115,17 @@ SceneLoad scene_load(const SceneCase& c) {
     load.flow = std::make_unique<UniformFlow>(channel_of(c), Eigen::Vector2d::Zero());
   }
   load.velocities = Eigen::VectorXd::Zero(3 * n);
+  load.spins = Eigen::VectorXd::Zero(n);
   if (c.load == "friction")
     for (int i = 0; i < n; ++i) load.velocities.segment<2>(3 * i) = -c.U * e;
+  if (c.load == "rotation" || c.load == "orbit") {
+    // rigid rotation at U / d about the centroid (hsrod_case.py channelBody, load rotation / orbit)
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (const auto& x : c.positions) centre += x.head<2>() / n;
+    const double omega = c.U / c.d;
+    load.velocities = rigid_sphere_velocities(load.rod, centre, Eigen::Vector3d(0.0, 0.0, omega));
+    if (c.load == "rotation") load.spins.setConstant(omega);
+  }
   load.force_scale = 3.0 * kPi * c.mu * c.d * c.U;
   return load;
 }
@@ -113,9 +140,8 @@ std::vector<Eigen::Vector2d> scaled(const RodDrag& drag, const SceneLoad& load) 
 }
 }  // namespace
 
-std::vector<Eigen::Vector2d> scene_forces(const std::string& model_name, const SceneCase& c,
-                                          const ConfinementTable& table, const NearFieldCalibration& near_field,
-                                          const WallProximityCalibration& wall) {
+SceneSphereLoads scene_sphere_loads(const std::string& model_name, const SceneCase& c, const ConfinementTable& table,
+                                    const NearFieldCalibration& near_field, const WallProximityCalibration& wall) {
   const HydrodynamicParameters p{c.mu, c.gap_height(), c.d};
   const std::unique_ptr<HydrodynamicModel> model = make_level_model(model_name, p, table, near_field);
   if (auto* local = dynamic_cast<LocalDragBase*>(model.get()))
@@ -123,7 +149,31 @@ std::vector<Eigen::Vector2d> scene_forces(const std::string& model_name, const S
   const SceneLoad load = scene_load(c);
   RodDrag drag;
   model->evaluate(load.rod, *load.flow, drag);
-  return scaled(drag, load);
+  SceneSphereLoads out;
+  out.forces = scaled(drag, load);
+  for (int i = 0; i < load.rod.size(); ++i)
+    out.torques.push_back(drag.torque(i, Eigen::Vector3d(0.0, 0.0, load.spins(i))).z() / (load.force_scale * c.d));
+  return out;
+}
+
+std::vector<Eigen::Vector2d> scene_forces(const std::string& model_name, const SceneCase& c,
+                                          const ConfinementTable& table, const NearFieldCalibration& near_field,
+                                          const WallProximityCalibration& wall) {
+  return scene_sphere_loads(model_name, c, table, near_field, wall).forces;
+}
+
+double rod_torque(const std::vector<Eigen::Vector3d>& positions, double d, const std::vector<Eigen::Vector2d>& forces,
+                  const std::vector<double>& torques) {
+  if (positions.size() != forces.size() || positions.size() != torques.size() || positions.empty())
+    throw std::invalid_argument("rod_torque: positions, forces and torques differ in length");
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (const auto& x : positions) centre += x.head<2>() / static_cast<double>(positions.size());
+  double t = 0.0;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const Eigen::Vector2d r = (positions[i].head<2>() - centre) / d;
+    t += r.x() * forces[i].y() - r.y() * forces[i].x() + torques[i];
+  }
+  return t;
 }
 
 std::vector<Eigen::Vector2d> wall_proximity_forces(const WallProximityLaw& law, const SceneCase& c,

@@ -7,8 +7,12 @@
 //             a = drag angle) through fluid at rest (the wide slit, or the
 //             channel with its walls and pore);
 //   driving:  the spheres held in the flow: the wide slit's uniform stream
-//             U e, or the channel flow of mean velocity U along x.
-// Forces over 3 pi mu d U.
+//             U e, or the channel flow of mean velocity U along x;
+//   rotation: (channel) the row turns rigidly at Omega = U / d about +z about
+//             the centroid c of its sphere centres through fluid at rest:
+//             sphere i translates at Omega e_z x (x_i - c) and spins at Omega;
+//   orbit:    the same translations, the spheres not spinning.
+// Forces over 3 pi mu d U, torques over 3 pi mu d^2 U.
 #pragma once
 
 #include <Eigen/Core>
@@ -30,7 +34,7 @@ namespace hsrod::calib {
 struct SceneCase {
   std::string name;             // configuration (geometry_cases.py "case")
   std::string geometry;         // bent | wall | pore
-  std::string load;             // friction | driving
+  std::string load;             // friction | driving | rotation | orbit
   std::string role = "fit";     // the plan's role (fit, or *_heldout: left out of every fit)
   double beta = 0.0;            // d / H [-]
   double gap_over_d = 0.0;      // smallest surface gap to the wall / pore cylinder [d]
@@ -43,6 +47,8 @@ struct SceneCase {
   std::vector<Eigen::Vector3d> positions;                    // sphere centres [m]
   std::vector<Eigen::Vector2d> resolved;                     // per-sphere force / (3 pi mu d U)
   std::vector<Eigen::Vector2d> mesh_change;                  // change from the next coarser mesh (NaN: none)
+  std::vector<double> resolved_torque;                       // per-sphere z torque about its centre / (3 pi mu d^2 U) (NaN: not in the table)
+  std::vector<double> torque_mesh_change;                    // its change from the next coarser mesh (NaN: none)
   double gap_height() const { return d / beta; }             // H [m]
 };
 
@@ -57,12 +63,30 @@ std::vector<Eigen::Vector2d> scene_forces(const std::string& model, const SceneC
                                           const NearFieldCalibration& near_field = NearFieldCalibration::built_in(),
                                           const WallProximityCalibration& wall = WallProximityCalibration::built_in());
 
+// Per sphere: in-plane force / (3 pi mu d U) and z torque about the sphere's
+// centre / (3 pi mu d^2 U), at the case's sphere velocities and spins.
+struct SceneSphereLoads {
+  std::vector<Eigen::Vector2d> forces;
+  std::vector<double> torques;
+};
+SceneSphereLoads scene_sphere_loads(const std::string& model, const SceneCase& c, const ConfinementTable& table,
+                                    const NearFieldCalibration& near_field = NearFieldCalibration::built_in(),
+                                    const WallProximityCalibration& wall = WallProximityCalibration::built_in());
+
+// The rod's z torque about the centroid of its sphere centres, over
+// 3 pi mu d^2 U: sum of (x_i - c) x F_i + T_i (forces over 3 pi mu d U, T_i
+// over 3 pi mu d^2 U, positions [m], d [m]).
+double rod_torque(const std::vector<Eigen::Vector3d>& positions, double d, const std::vector<Eigen::Vector2d>& forces,
+                  const std::vector<double>& torques);
+
 // What a case's load is made of: the rod, the flow the levels see (the
-// channel at rest or in flow, or the wide slit) and the sphere velocities [m/s].
+// channel at rest or in flow, or the wide slit), the sphere velocities [m/s]
+// and spins about z [rad/s].
 struct SceneLoad {
   RodGeometry rod;
   std::unique_ptr<BackgroundFlow> flow;
   Eigen::VectorXd velocities;  // 3n
+  Eigen::VectorXd spins;       // n
   double force_scale = 1.0;    // 3 pi mu d U [N]
 };
 SceneLoad scene_load(const SceneCase& c);

@@ -152,7 +152,10 @@ def make_channel_body(scene, case):
       load "rotation": the row turns rigidly about the centroid of its
                        sphere centres at Omega = U / d about +z (sphere i
                        moves with Omega e_z x (x_i - c) and spins with
-                       Omega e_z) through fluid at rest.
+                       Omega e_z) through fluid at rest;
+      load "orbit":    the same sphere translations without the spin
+                       (omega_i = 0): its difference from "rotation" is
+                       what each sphere's own spin contributes.
     Mesh: uniform cubes of 2 d / cells_per_diameter (the pore's body-fitted
     blocks for a pore), refined once (refineMesh) in a full-height box
     mesh.refine_margin d (default 1) around the spheres, so the spheres and
@@ -172,18 +175,18 @@ def make_channel_body(scene, case):
         for sp in spheres:
             sp["v"] = [-U * math.cos(f), -U * math.sin(f), 0.0]
         inflow = {"type": "meanVelocity", "U": 0.0}
-    elif load == "rotation":
+    elif load in ("rotation", "orbit"):
         om = U / d
         cx = sum(sp["x"][0] for sp in spheres) / len(spheres)
         cy = sum(sp["x"][1] for sp in spheres) / len(spheres)
         for sp in spheres:
             sp["v"] = [-om * (sp["x"][1] - cy), om * (sp["x"][0] - cx), 0.0]
-            sp["omega"] = [0.0, 0.0, om]
+            sp["omega"] = [0.0, 0.0, om if load == "rotation" else 0.0]
         inflow = {"type": "meanVelocity", "U": 0.0}
     elif load == "driving":
         inflow = {"type": "meanVelocity", "U": U}
     else:
-        sys.exit("hsrod_case: channelBody load must be friction, driving or rotation (got '%s')" % load)
+        sys.exit("hsrod_case: channelBody load must be friction, driving, rotation or orbit (got '%s')" % load)
     margin = float(m.get("refine_margin", 1.0)) * d
     lo = [max(0.0, min(sp["x"][k] for sp in spheres) - 0.5 * d - margin) for k in (0, 1)] + [-0.01 * H]
     hi = [min((L, W)[k], max(sp["x"][k] for sp in spheres) + 0.5 * d + margin) for k in (0, 1)] + [1.01 * H]

@@ -5,6 +5,7 @@
 //   hsrod_crosscheck_scenes CASES.csv OUT.csv [--levels isotropic,local,nonlocal,twoway]
 //                           [--table FILE] [--near-field FILE|off] [--label TEXT]
 //                           [--wall-record FILE] [--wall-record-cpp FILE] [--case-table FILE]
+//                           [--no-wall-law]
 //
 // CASES.csv: calibration/data/resolved_geometry_per_sphere.csv
 // (calibration/tools/geometry_cases.py; the finest mesh of every case is
@@ -16,6 +17,10 @@
 //                     flow, y towards (-) / away from (+) the wall): resolved,
 //                     model, error (model - resolved) / |resolved| and
 //                     error_of_magnitude (model - resolved) / |F_total|;
+//   T_z               the rod's z torque about the centroid of its sphere
+//                     centres (sum of (x_i - c) x F_i + T_i) over
+//                     3 pi mu d^2 U, when the table has the per-sphere torques
+//                     (column tz): resolved, model, error over |resolved|;
 //   profile_rms       RMS over the spheres of |F_i,model - F_i,resolved| over
 //                     the mean |F_i,resolved|;
 //   f{x,y}_<i>        per sphere, error over the mean |F_i,resolved|;
@@ -26,11 +31,15 @@
 // the distance to walls and pores (calibration/data/level_error_near_walls.csv);
 // --wall-record-cpp: the same rows (walls and pores) as `auto`'s built-in
 // near-wall record (drag-models/hydro/auto_near_wall_record.cpp).
+// --no-wall-law: every level without the near-wall law (hydro/wall_proximity.h),
+// to see what the law itself does.
 // --case-table: one row per level and case (geometry, role, gap, row angle,
 // load): errors of the totals F_x, F_y (model / resolved - 1), of the total
-// vector (|F_model - F_resolved| / |F_resolved|), the profile RMS, and the
+// vector (|F_model - F_resolved| / |F_resolved|), the profile RMS, the
 // resolved total's change from the next coarser mesh over |F| (its numerical
-// uncertainty; nan without a coarser mesh).
+// uncertainty; nan without a coarser mesh), and the rod torque T_z (resolved,
+// model / resolved - 1, its mesh change over |T_z|; nan without torques).
+// Loads: friction, driving, rotation and orbit (scene_crosscheck.h).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -52,6 +61,7 @@ struct Options {
   std::string cases_path, out_path, table_path, near_field_path, label = "built-in",
                                                                  levels = "isotropic,local,nonlocal,twoway";
   std::string wall_record, wall_record_cpp, case_table;
+  bool no_wall_law = false;
 };
 
 void add_options(CLI::App& app, Options& o) {
@@ -64,6 +74,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--wall-record", o.wall_record, "write the worst errors per level, geometry and gap (CSV)");
   app.add_option("--wall-record-cpp", o.wall_record_cpp, "write the near-wall rows as auto's built-in record (C++)");
   app.add_option("--case-table", o.case_table, "write one row of total and profile errors per level and case (CSV)");
+  app.add_flag("--no-wall-law", o.no_wall_law, "every level without the near-wall law");
 }
 
 // worst |error| of one level over the cases of a (geometry, beta, gap/d):
@@ -77,18 +88,30 @@ using Worst = std::map<std::string, std::pair<double, double>>;         // print
 
 // one case and level: OUT.csv rows (totals, profile RMS, per sphere), worst errors
 void compare_case(std::ostream& out, std::ostream* case_table, const std::string& level, const SceneCase& c,
-                  const std::vector<Eigen::Vector2d>& m, Worst& worst, Cells& cells, const std::string& label) {
+                  const SceneSphereLoads& model, Worst& worst, Cells& cells, const std::string& label) {
+  const std::vector<Eigen::Vector2d>& m = model.forces;
   Eigen::Vector2d tm = Eigen::Vector2d::Zero(), tr = Eigen::Vector2d::Zero(), dr = Eigen::Vector2d::Zero();
   for (std::size_t i = 0; i < m.size(); ++i) {
     tm += m[i];
     tr += c.resolved[i];
     dr += c.mesh_change[i];
   }
+  // the rod torques (NaN when the table has no per-sphere torques)
+  const double torque_model = rod_torque(c.positions, c.d, m, model.torques);
+  const double torque_resolved = rod_torque(c.positions, c.d, c.resolved, c.resolved_torque);
+  std::vector<Eigen::Vector2d> coarse_forces;
+  std::vector<double> coarse_torques;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    coarse_forces.push_back(c.resolved[i] - c.mesh_change[i]);
+    coarse_torques.push_back(c.resolved_torque[i] - c.torque_mesh_change[i]);
+  }
+  const double torque_change = torque_resolved - rod_torque(c.positions, c.d, coarse_forces, coarse_torques);
   if (case_table)
     *case_table << level << ',' << c.name << ',' << c.geometry << ',' << c.role << ',' << c.beta << ','
                 << c.gap_over_d << ',' << c.row_angle_deg << ',' << c.load << ',' << tr[0] << ',' << tr[1] << ','
                 << tm[0] / tr[0] - 1.0 << ',' << tm[1] / tr[1] - 1.0 << ',' << (tm - tr).norm() / tr.norm() << ','
-                << profile_rms(m, c.resolved) << ',' << dr.norm() / tr.norm() << '\n';
+                << profile_rms(m, c.resolved) << ',' << dr.norm() / tr.norm() << ',' << torque_resolved << ','
+                << torque_model / torque_resolved - 1.0 << ',' << torque_change / std::abs(torque_resolved) << '\n';
   char head[512];
   std::snprintf(head, sizeof head, "%s,%s,%s,%s,%g,%zu,%g,%g,%g,%s", label.c_str(), level.c_str(), c.name.c_str(),
                 c.geometry.c_str(), c.beta, m.size(), c.gap_over_d, c.row_angle_deg, c.bend_deg, c.load.c_str());
@@ -108,6 +131,10 @@ void compare_case(std::ostream& out, std::ostream* case_table, const std::string
       cell.force = std::max(cell.force, std::abs(err));
     }
   }
+  if (std::isfinite(torque_resolved))
+    out << head << ",T_z," << torque_resolved << ',' << torque_model << ','
+        << (torque_model - torque_resolved) / std::abs(torque_resolved) << ','
+        << (torque_model - torque_resolved) / std::abs(torque_resolved) << '\n';
   const double rms = profile_rms(m, c.resolved);
   Cell& cell = cells[{c.geometry, c.beta, c.gap_over_d}];
   cell.rms = std::max(cell.rms, rms);
@@ -150,7 +177,8 @@ void report_level(const std::string& label, const std::string& level, const Cell
 // one level against every case
 void crosscheck_level(const std::string& label, const std::string& level, const std::vector<SceneCase>& cases,
                       const hsrod::ConfinementTable& table, const hsrod::NearFieldCalibration& near_field,
-                      std::ostream& out, std::ofstream& record, std::ostream& cpp_rows, std::ostream* case_table) {
+                      std::ostream& out, std::ofstream& record, std::ostream& cpp_rows, std::ostream* case_table,
+                      bool wall_law) {
   Worst worst;
   Cells cells;
   // Each level as users get it: level 3 with images carries the law fitted on
@@ -158,10 +186,11 @@ void crosscheck_level(const std::string& label, const std::string& level, const 
   hsrod::WallProximityCalibration wall = hsrod::WallProximityCalibration::built_in();
   if (level == "nonlocal+images") wall.nonlocal = hsrod::wall_proximity_with_images();
   if (level == "nonlocal+reflections") wall.nonlocal = hsrod::wall_proximity_with_reflections();
+  if (!wall_law) wall = hsrod::WallProximityCalibration::off();
   for (const SceneCase& c : cases) {
-    std::vector<Eigen::Vector2d> m;
+    SceneSphereLoads m;
     try {
-      m = scene_forces(level, c, table, near_field, wall);
+      m = scene_sphere_loads(level, c, table, near_field, wall);
     } catch (const std::exception& e) {
       std::printf("%-9s %-26s %-8s: not evaluated: %s\n", level.c_str(), c.name.c_str(), c.load.c_str(), e.what());
       continue;
@@ -227,7 +256,8 @@ int main(int argc, char** argv) {
       case_table.open(o.case_table);
       case_table << "# hsrod_crosscheck_scenes --case-table " << o.cases_path << "; table: " << table.source()
                  << "; forces over 3 pi mu d U\nlevel,case,geometry,role,beta,gap_over_d,row_angle_deg,load,"
-                    "Fx_resolved,Fy_resolved,Fx_error,Fy_error,total_error,profile_rms,resolved_mesh_change\n";
+                    "Fx_resolved,Fy_resolved,Fx_error,Fy_error,total_error,profile_rms,resolved_mesh_change,Tz_resolved,Tz_error,"
+                    "Tz_mesh_change\n";
       case_table.precision(4);
     }
     std::ostringstream cpp_rows;
@@ -236,7 +266,7 @@ int main(int argc, char** argv) {
     std::string level;
     while (std::getline(levels_in, level, ','))
       crosscheck_level(o.label, level, cases, table, near_field, out, record, cpp_rows,
-                       case_table.is_open() ? &case_table : nullptr);
+                       case_table.is_open() ? &case_table : nullptr, !o.no_wall_law);
     if (!o.wall_record_cpp.empty()) write_wall_record_cpp(o.wall_record_cpp, o.cases_path, table, cpp_rows.str());
     std::printf("wrote %s\n", o.out_path.c_str());
   } catch (const std::exception& e) {

@@ -9,8 +9,10 @@ GEOMETRIES) as one per-sphere table for the cross-check of levels 1-4
 One row per sphere, case (configuration and load) and mesh:
   case            the configuration (geometry, beta, n, gap, angles), without load and mesh
   geometry        bent | wall | pore
-  load            friction (the row translates at -U e, e = (cos a, sin a), a = drag_angle_deg)
-                  or driving (held: wide slit: stream U e; channel: channel flow of mean U along x)
+  load            friction (the row translates at -U e, e = (cos a, sin a), a = drag_angle_deg),
+                  driving (held: wide slit: stream U e; channel: channel flow of mean U along x),
+                  rotation (channel: the row turns rigidly at U / d about +z about its centroid, the
+                  spheres spinning with it) or orbit (the same sphere translations, no spin)
   finest          1 on the finest mesh of the case (the cross-check uses these), else 0
   x, y, z         sphere centre [m] (slit: row frame, origin at the body's centre; channel: the
                   channel's frame, side wall y = 0, plates z = 0 and H)
@@ -18,6 +20,8 @@ One row per sphere, case (configuration and load) and mesh:
   dfx, dfy        finest mesh only: change from the next coarser mesh (nan without one)
   channel_L, channel_W, pore_R, pore_x [m]: wall and pore cases (0 otherwise)
   role            the plan's role of the case (fit, or *_heldout: left out of every fit)
+  tz, dtz         torque on the sphere about its centre, z component, over 3 pi mu d^2 U, and its
+                  change from the next coarser mesh
 Python 3 standard library only.
 """
 import argparse
@@ -29,7 +33,7 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 COLUMNS = ("case,geometry,beta,n,spacing,gap_over_d,row_angle_deg,bend_deg,load,drag_angle_deg,cells_per_diameter,"
-           "finest,d,mu,U,gap_height,channel_L,channel_W,pore_R,pore_x,sphere,x,y,z,fx,fy,dfx,dfy,role,source")
+           "finest,d,mu,U,gap_height,channel_L,channel_W,pore_R,pore_x,sphere,x,y,z,fx,fy,dfx,dfy,role,source,tz,dtz")
 
 
 def case_key(spec):
@@ -73,18 +77,20 @@ def write_csv(cases, path, campaigns):
             pore = sc.get("pore", {})
             for i, sp in enumerate(r["spheres"]):
                 fx, fy = sp["F"][0] / z0, sp["F"][1] / z0
+                tz = sp["T"][2] / (z0 * s["d"])
                 if coarse:
                     dfx = fx - coarse["spheres"][i]["F"][0] / z0
                     dfy = fy - coarse["spheres"][i]["F"][1] / z0
+                    dtz = tz - coarse["spheres"][i]["T"][2] / (z0 * s["d"])
                 else:
-                    dfx = dfy = float("nan")
+                    dfx = dfy = dtz = float("nan")
                 lines.append(",".join(str(v) for v in (
                     key, g["kind"], s["beta"], s["n"], s["spacing"], g.get("gap", 0), g.get("row_angle_deg", 0),
                     g.get("bend_deg", 0), load, s["flow_angle_deg"], n_d, int(finest), s["d"], s["mu"], s["U"],
                     "%.9g" % H, "%.9g" % ch.get("L", 0), "%.9g" % ch.get("W", 0), "%.9g" % pore.get("R", 0),
                     "%.9g" % pore.get("x", 0), sp["id"],
                     "%.9g" % sp["x"][0], "%.9g" % sp["x"][1], "%.9g" % sp["x"][2], "%.8g" % fx, "%.8g" % fy,
-                    "%.3g" % dfx, "%.3g" % dfy, s.get("role", "fit"), r["source"])))
+                    "%.3g" % dfx, "%.3g" % dfy, s.get("role", "fit"), r["source"], "%.8g" % tz, "%.3g" % dtz)))
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
     return len(lines) - 2

@@ -3,13 +3,12 @@
 
 Reads pillars_s<N>.dump (id mol x y every 0.5 ms), tracks each rod's
 centre (mean of its spheres) and measures its lateral displacement per
-column: the y-change of the centre between entering the array (centre at
-x = 80 um, one column spacing before the first column) and leaving it
-(x = 540 um, two spacings after the last column at 460 um, where the
-centre has left the pillars' wakes), divided by the 10 columns
-crossed. Bumping (DLD displacement mode) would give eps * lambda_y = 4 um per
-column, zigzag 0. Writes pillar_sorting.png and prints one line per rod.
-Usage: plot_pillars.py [spheres ...] (default 3 6 12).
+column: the y-change of the centre between x = 115 um (half a spacing
+after the first column at 100 um) and x = 715 um, two whole periods (20
+columns) later, inside the array: over whole periods a rod that zigzags
+comes back to the same place in its lane (0), one that bumps has moved
+eps * lambda_y = 3 um per column. Writes pillar_sorting.png and prints one line per rod.
+Usage: plot_pillars.py [spheres ...] (default 2 4 8 12).
 """
 import sys
 
@@ -19,8 +18,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 UM = 1e-6
-X_IN, X_OUT, COLUMNS = 80 * UM, 540 * UM, 10
-SHIFT_PER_COLUMN = 0.1 * 40 * UM  # eps * lambda_y [m]
+X_IN, X_OUT, COLUMNS = 115 * UM, 715 * UM, 20
+SHIFT_PER_COLUMN = 0.1 * 30 * UM  # eps * lambda_y [m]
 
 
 def read_dump(path):
@@ -54,9 +53,9 @@ def crossing_y(track, x):
 
 
 def main():
-    lengths = [int(a) for a in sys.argv[1:]] or [3, 6, 12]
+    lengths = [int(a) for a in sys.argv[1:]] or [2, 4, 8, 12]
     fig, (ax_tracks, ax_shift) = plt.subplots(1, 2, figsize=(11, 4.2))
-    colours = dict(zip(lengths, ["tab:blue", "tab:orange", "tab:green", "tab:red"]))
+    colours = dict(zip(lengths, ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown"]))
     summary = []
     for n in lengths:
         rods = read_dump(f"pillars_s{n}.dump")
@@ -75,24 +74,24 @@ def main():
         if shifts:
             summary.append((n, np.mean(shifts), np.min(shifts), np.max(shifts)))
             print(f"PILLARS spheres {n}: mean {np.mean(shifts) / UM:+.2f} um per column over {len(shifts)} rods")
-    # The pillars (as laid out by fix hele_shaw/drag pillars 10e-6 100e-6 460e-6 40e-6 40e-6 0.1).
-    for i in range(COLUMNS):
+    # The pillars (as laid out by fix hele_shaw/drag pillars 9e-6 100e-6 970e-6 30e-6 30e-6 0.1).
+    for i in range(30):
         s = (i * 0.1) % 1.0
-        for j in range(-3, 4):
-            y = 100 + (j + s) * 40
-            if 20 - 1e-9 <= y <= 180 + 1e-9:
-                ax_tracks.add_patch(plt.Circle((100 + 40 * i, y), 10, color="0.6"))
-    ax_tracks.set_xlim(0, 600)
-    ax_tracks.set_ylim(0, 200)
+        for j in range(-6, 7):
+            y = 150 + (j + s) * 30
+            if 15 - 1e-9 <= y <= 285 + 1e-9:
+                ax_tracks.add_patch(plt.Circle((100 + 30 * i, y), 9, color="0.6"))
+    ax_tracks.set_xlim(0, 1100)
+    ax_tracks.set_ylim(0, 300)
     ax_tracks.set_aspect("equal")
     ax_tracks.set_xlabel("x [um]")
     ax_tracks.set_ylabel("y [um]")
-    ax_tracks.set_title("rod centres, pillars R = 10 um, eps = 0.1")
+    ax_tracks.set_title("rod centres, pillars R = 9 um, G = 12 um, eps = 0.1")
     ax_tracks.legend(fontsize=7, loc="lower right")
     for n, mean, lo, hi in summary:
         ax_shift.errorbar([3 * n], [mean / UM], yerr=[[(mean - lo) / UM], [(hi - mean) / UM]], fmt="o",
                           color=colours[n], capsize=4)
-    ax_shift.axhline(SHIFT_PER_COLUMN / UM, ls="--", color="k", lw=0.8, label="bump: eps lambda_y = 4 um")
+    ax_shift.axhline(SHIFT_PER_COLUMN / UM, ls="--", color="k", lw=0.8, label="bump: eps lambda_y = 3 um")
     ax_shift.axhline(0.0, ls=":", color="k", lw=0.8, label="zigzag: 0")
     ax_shift.set_xlabel("rod length [um]")
     ax_shift.set_ylabel("lateral displacement per column [um]")

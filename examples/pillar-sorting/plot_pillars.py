@@ -17,39 +17,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+from pillar_tracks import COLUMNS, SHIFT_PER_COLUMN, X_IN, X_OUT, crossing_y, rod_centres
+
 UM = 1e-6
-X_IN, X_OUT, COLUMNS = 115 * UM, 715 * UM, 20
-SHIFT_PER_COLUMN = 0.1 * 30 * UM  # eps * lambda_y [m]
 
 
 def read_dump(path):
-    """{mol: [(x, y) of the rod centre per frame]}"""
-    rods, lines = {}, open(path).read().split("\n")
-    i = 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: NUMBER OF ATOMS"):
-            n = int(lines[i + 1])
-            while not lines[i].startswith("ITEM: ATOMS"):
-                i += 1
-            frame = {}
-            for row in lines[i + 1:i + 1 + n]:
-                _, mol, x, y = row.split()[:4]
-                frame.setdefault(int(mol), []).append((float(x), float(y)))
-            for mol, pts in frame.items():
-                rods.setdefault(mol, []).append(np.mean(pts, axis=0))
-            i += n
-        i += 1
-    return {mol: np.array(track) for mol, track in rods.items()}
-
-
-def crossing_y(track, x):
-    """y of the centre when it first passes x (linear between frames), or None."""
-    beyond = np.nonzero(track[:, 0] >= x)[0]
-    if len(beyond) == 0 or beyond[0] == 0:
-        return None
-    k = beyond[0]
-    (x0, y0), (x1, y1) = track[k - 1], track[k]
-    return y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+    """{mol: array of (x, y) of the rod centre per frame}"""
+    return {mol: np.array(track) for mol, track in rod_centres(path).items()}
 
 
 def main():

@@ -24,39 +24,11 @@ import subprocess
 import sys
 import tempfile
 
+# The example's own measurement of the tracks (numpy-free).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "pillar-sorting"))
+from pillar_tracks import COLUMNS, SHIFT_PER_COLUMN, X_IN, X_OUT, crossing_y, rod_centres  # noqa: E402
+
 MIDPOINT = 0.5  # between zigzag (0) and bump (1), in eps * lambda_y per column
-# The example's measurement (examples/pillar-sorting/plot_pillars.py, which
-# needs numpy and matplotlib): y of the rod centre at x = 115 and 715 um,
-# 20 columns, eps * lambda_y = 3 um.
-X_IN, X_OUT, COLUMNS, SHIFT_PER_COLUMN = 115e-6, 715e-6, 20, 3e-6
-
-
-def rod_centres(path):
-    """{mol: [(x, y) of the rod centre per frame]} from a dump of id mol x y."""
-    rods, lines, i = {}, open(path).read().split("\n"), 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: NUMBER OF ATOMS"):
-            n = int(lines[i + 1])
-            while not lines[i].startswith("ITEM: ATOMS"):
-                i += 1
-            frame = {}
-            for row in lines[i + 1:i + 1 + n]:
-                _, mol, x, y = row.split()[:4]
-                frame.setdefault(int(mol), []).append((float(x), float(y)))
-            for mol, pts in frame.items():
-                rods.setdefault(mol, []).append((sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts)))
-            i += n
-        i += 1
-    return rods
-
-
-def crossing_y(track, x):
-    """y of the centre when it first passes x (linear between frames), or None."""
-    for k in range(1, len(track)):
-        if track[k][0] >= x:
-            (x0, y0), (x1, y1) = track[k - 1], track[k]
-            return y0 + (y1 - y0) * (x - x0) / (x1 - x0)
-    return None
 
 
 def displacements(hsrod, folder, work, spheres):

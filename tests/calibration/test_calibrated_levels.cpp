@@ -183,3 +183,23 @@ TEST(calibration_CalibratedLevels, LoneSphereAtEveryLevelIsTheResolvedConfinedSp
   }
   EXPECT_GE(spheres, 2);
 }
+
+// beta 0.83 (the paper's Hele-Shaw scene, Fig. 3: a rod of 15 spheres), above
+// the fitted range (0.1-0.75): the resolved rows of calibration/campaign/
+// beta-high (meshes d/h = 12 and 16, values on 16: calibration/data/
+// resolved_beta_high_series.csv) against levels 2-4 with the shipped table and
+// near field, at the tolerances of every calibrated beta above. Not met
+// (examples/hele-shaw/README.md): level 3's perpendicular loads on the
+// 15-sphere rod are 44-49 % high and its r 6.8 %; level 4's loads 18-20 %,
+// level 2's r -1.2 %. Enabled once the table is refitted over beta 0.83-0.9.
+TEST(calibration_CalibratedLevels, DISABLED_LevelsTwoToFourAtTheFigThreeConfinementAsResolved) {
+  const auto rows = read_resolved_series(std::string(HSROD_TEST_DATA_DIR) +
+                                         "/../../calibration/data/resolved_beta_high_series.csv");
+  int rods = 0;
+  for (const auto& s : rows) {
+    if (s.n < 2 || s.beta > 0.85) continue;  // level 4's table stops at beta 0.85
+    ++rods;
+    for (const std::string level : {"local", "nonlocal", "twoway"}) expect_rod(s, level);
+  }
+  EXPECT_GE(rods, 4) << "resolved beta 0.83 rods of 2, 5, 10 and 15 spheres expected";
+}

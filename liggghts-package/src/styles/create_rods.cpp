@@ -195,6 +195,13 @@ SeededRodsSpec parse(Error *error, int narg, char **arg) {
 void CreateRods::command(int narg, char **arg) {
   const SeededRodsSpec a = parse(error, narg, arg);
   const hsrod::RodHydrodynamics &scene = seeding_drag_fix(lmp, kStyle, a)->hydrodynamics();
+  const double gap_height = scene.geometry().gap_height();  // [m]
+  if (!(a.seeding.sphere_diameter > 0.0 && a.seeding.sphere_diameter < gap_height)) {
+    char msg[256];
+    std::snprintf(msg, sizeof(msg), "create_rods: diameter %g m must be > 0 and below the gap height %g m (beta = d/H < 1)",
+                  a.seeding.sphere_diameter, gap_height);
+    error->all(FLERR, msg);
+  }
   std::vector<hsrod::SeededRod> rods;
   try {
     // The same seed on every rank gives the same rods everywhere.

@@ -24,6 +24,8 @@
 //   profile_rms       RMS over the spheres of |F_i,model - F_i,resolved| over
 //                     the mean |F_i,resolved|;
 //   f{x,y}_<i>        per sphere, error over the mean |F_i,resolved|;
+//   tz_<i>            per sphere, z torque about its centre over 3 pi mu d^2 U,
+//                     error over the mean |T_i,resolved| (with the table's torques);
 // with the case's geometry, beta, n, gap (d), row angle, bend and load.
 // Prints per level the worst errors per geometry and gap. --wall-record: the
 // same worst errors as CSV (level, geometry, beta, gap over d and over H,
@@ -147,6 +149,13 @@ void compare_case(std::ostream& out, std::ostream* case_table, const std::string
     for (int k = 0; k < 2; ++k)
       out << head << ",f" << "xy"[k] << '_' << (i + 1) << ',' << c.resolved[i][k] << ',' << m[i][k] << ','
           << (m[i][k] - c.resolved[i][k]) / mean << ',' << (m[i][k] - c.resolved[i][k]) / mean << '\n';
+  if (!std::isfinite(torque_resolved)) return;
+  double mean_torque = 0.0;
+  for (double t : c.resolved_torque) mean_torque += std::abs(t) / c.resolved_torque.size();
+  for (std::size_t i = 0; i < m.size(); ++i)
+    out << head << ",tz_" << (i + 1) << ',' << c.resolved_torque[i] << ',' << model.torques[i] << ','
+        << (model.torques[i] - c.resolved_torque[i]) / mean_torque << ','
+        << (model.torques[i] - c.resolved_torque[i]) / mean_torque << '\n';
 }
 
 // one level's worst errors: --wall-record rows, near-wall C++ rows, summary lines

@@ -304,8 +304,10 @@ def main(argv=None):
     if not a.no_write:
         cases = geometry_cases.load_cases([a.campaign])
         cases.update(straight_cases(a.straight, 15, 0.83))
-        geometry_cases.write_csv(cases, a.per_sphere, ["'%s'" % os.path.basename(os.path.normpath(o))
-                                                       for o in (a.campaign, a.straight)])
+        geometry_cases.write_csv(cases, a.per_sphere, [
+            "'%s'" % os.path.basename(os.path.normpath(a.campaign)),
+            "'%s' (its straight row of 15 at beta 0.83, as a bent rod of bend 0)"
+            % os.path.basename(os.path.normpath(a.straight))])
     ps = read_per_sphere(a.per_sphere)
     res = resolved_states(ps)
     levels = a.levels.split(",")

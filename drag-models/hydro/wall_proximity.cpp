@@ -86,7 +86,7 @@ void add_wall_proximity(const WallProximityLaw& law, const RodGeometry& rod, con
                                    std::abs(law.along) * (1.0 + 2.0 * std::abs(law.along_row_gain)),
                                    std::abs(law.normal_held) * (1.0 + 2.0 * std::abs(law.normal_row_gain)),
                                    std::abs(law.along_held) * (1.0 + 2.0 * std::abs(law.along_row_gain)),
-                                   std::abs(law.squeeze), std::abs(law.squeeze_held)});
+                                   std::abs(law.squeeze), std::abs(law.squeeze_held), std::abs(law.pair_squeeze)});
   if (!(largest > 0.0)) return;
   const double reach = law.screening * gap_height * std::log(std::max(1.0, 1e4 * 2.0 * largest));
   const bool coupled = out.coupled();

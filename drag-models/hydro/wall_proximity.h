@@ -120,6 +120,16 @@ const WallProximityLaw& wall_proximity_with_images();
 // equal to hydro/wall_reflections_fit.cpp: calibration_WallReflections.BuiltInLawIsTheFit).
 const WallProximityLaw& wall_proximity_with_reflections();
 
+// k_p fitted on top of wall_proximity_with_images() / _with_reflections() to
+// the along-wall push of the resolved row of 10 turning 0.5 d from a side wall
+// (beta 0.3, campaign near-wall-rotation: +2.595 in 3 pi mu d U at Omega d = U),
+// one number per level. Not set in the shipped laws: in the dynamic pore
+// passage, held out, it turns the rod 0.5 deg less and drifts it 0.0005-0.001 W
+// less, away from neither resolved measure's miss, and beside a pore cylinder
+// at 0.5 d it triples the row's push (calibration/validation/crosscheck_near_wall.md).
+constexpr double kPairSqueezeOnImages = 0.14232264600812172;       // [-]
+constexpr double kPairSqueezeOnReflections = 0.13961478819676637;  // [-]
+
 // Shapes of the single-wall rises (3-D Stokes, see above) at surface gap
 // delta over the sphere radius a [-].
 double wall_normal_rise(double gap_over_radius);

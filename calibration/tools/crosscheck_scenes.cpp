@@ -5,7 +5,7 @@
 //   hsrod_crosscheck_scenes CASES.csv OUT.csv [--levels isotropic,local,nonlocal,twoway]
 //                           [--table FILE] [--near-field FILE|off] [--label TEXT]
 //                           [--wall-record FILE] [--wall-record-cpp FILE] [--case-table FILE]
-//                           [--no-wall-law]
+//                           [--no-wall-law] [--pair-squeeze K]
 //
 // CASES.csv: calibration/data/resolved_geometry_per_sphere.csv
 // (calibration/tools/geometry_cases.py; the finest mesh of every case is
@@ -64,6 +64,7 @@ struct Options {
                                                                  levels = "isotropic,local,nonlocal,twoway";
   std::string wall_record, wall_record_cpp, case_table;
   bool no_wall_law = false;
+  double pair_squeeze = std::nan("");  // k_p of level 3's law (hydro/wall_proximity.h); NaN: as shipped
 };
 
 void add_options(CLI::App& app, Options& o) {
@@ -77,6 +78,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--wall-record-cpp", o.wall_record_cpp, "write the near-wall rows as auto's built-in record (C++)");
   app.add_option("--case-table", o.case_table, "write one row of total and profile errors per level and case (CSV)");
   app.add_flag("--no-wall-law", o.no_wall_law, "every level without the near-wall law");
+  app.add_option("--pair-squeeze", o.pair_squeeze, "level 3's pair squeeze k_p in place of the shipped one (fitting)");
 }
 
 // worst |error| of one level over the cases of a (geometry, beta, gap/d):
@@ -187,7 +189,7 @@ void report_level(const std::string& label, const std::string& level, const Cell
 void crosscheck_level(const std::string& label, const std::string& level, const std::vector<SceneCase>& cases,
                       const hsrod::ConfinementTable& table, const hsrod::NearFieldCalibration& near_field,
                       std::ostream& out, std::ofstream& record, std::ostream& cpp_rows, std::ostream* case_table,
-                      bool wall_law) {
+                      bool wall_law, double pair_squeeze) {
   Worst worst;
   Cells cells;
   // Each level as users get it: level 3 with images carries the law fitted on
@@ -195,6 +197,7 @@ void crosscheck_level(const std::string& label, const std::string& level, const 
   hsrod::WallProximityCalibration wall = hsrod::WallProximityCalibration::built_in();
   if (level == "nonlocal+images") wall.nonlocal = hsrod::wall_proximity_with_images();
   if (level == "nonlocal+reflections") wall.nonlocal = hsrod::wall_proximity_with_reflections();
+  if (!std::isnan(pair_squeeze)) wall.nonlocal.pair_squeeze = pair_squeeze;
   if (!wall_law) wall = hsrod::WallProximityCalibration::off();
   for (const SceneCase& c : cases) {
     SceneSphereLoads m;
@@ -275,7 +278,7 @@ int main(int argc, char** argv) {
     std::string level;
     while (std::getline(levels_in, level, ','))
       crosscheck_level(o.label, level, cases, table, near_field, out, record, cpp_rows,
-                       case_table.is_open() ? &case_table : nullptr, !o.no_wall_law);
+                       case_table.is_open() ? &case_table : nullptr, !o.no_wall_law, o.pair_squeeze);
     if (!o.wall_record_cpp.empty()) write_wall_record_cpp(o.wall_record_cpp, o.cases_path, table, cpp_rows.str());
     std::printf("wrote %s\n", o.out_path.c_str());
   } catch (const std::exception& e) {

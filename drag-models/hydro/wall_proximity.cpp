@@ -35,6 +35,44 @@ double wall_along_rise(double g) {
   return 1.0 / (1.0 - 9.0 / 16.0 * x + x3 / 8.0 - 45.0 / 256.0 * x3 * x - x3 * x * x / 16.0) - 1.0;
 }
 
+namespace {
+
+// The neighbour pairs' squeeze flow along the wall (wall_proximity.h): symmetric
+// blocks of the coupled R, k = k_p 3 pi mu d sqrt(s_i s_j) s_ij,
+//   R_ii += k (t n^T + n t^T),  R_jj -= k (t n^T + n t^T),  R_ij = R_ji^T += k (n t^T - t n^T).
+void add_pair_squeeze(const WallProximityLaw& law, const RodGeometry& rod, const ChannelGeometry& walls,
+                      double gap_height, double reach, double unit, RodDrag& out) {
+  const double d = rod.sphere_diameter, a = 0.5 * d;
+  for (int i = 0; i + 1 < rod.size(); ++i) {
+    const int j = i + 1;
+    const Eigen::Vector2d pi = rod.positions[i].head<2>(), pj = rod.positions[j].head<2>();
+    const Eigen::Vector2d r = pj - pi;
+    const double dist = r.norm();
+    if (!(dist > 0.0) || dist >= 1.5 * d) continue;
+    const double gi = walls.signed_distance(pi.x(), pi.y()) - a, gj = walls.signed_distance(pj.x(), pj.y()) - a;
+    if (gi > reach || gj > reach) continue;
+    const Eigen::Vector2d ni = walls.wall_normal(pi.x(), pi.y()), nj = walls.wall_normal(pj.x(), pj.y());
+    const Eigen::Vector2d mean = ni + nj;
+    if (!(mean.norm() > 1e-12)) continue;
+    const Eigen::Vector2d nrm = mean.normalized();
+    const Eigen::Vector2d tan(-nrm.y(), nrm.x());
+    const double floor_gap = WallProximityLaw::kMinimumGapOverD * d;
+    const double screen = std::exp(-0.5 * (std::max(gi, floor_gap) + std::max(gj, floor_gap)) /
+                                   (law.screening * gap_height));
+    const double k = unit * law.pair_squeeze * screen * tan.dot(r) / dist;
+    const Eigen::Matrix2d sym = tan * nrm.transpose() + nrm * tan.transpose();
+    const Eigen::Matrix2d skew = nrm * tan.transpose() - tan * nrm.transpose();
+    out.coupled_resistance.block<2, 2>(3 * i, 3 * i) += k * sym;
+    out.coupled_resistance.block<2, 2>(3 * j, 3 * j) -= k * sym;
+    out.coupled_resistance.block<2, 2>(3 * i, 3 * j) += k * skew;
+    out.coupled_resistance.block<2, 2>(3 * j, 3 * i) += k * skew.transpose();
+    out.resistance[i].topLeftCorner<2, 2>() += k * sym;
+    out.resistance[j].topLeftCorner<2, 2>() -= k * sym;
+  }
+}
+
+}  // namespace
+
 void add_wall_proximity(const WallProximityLaw& law, const RodGeometry& rod, const BackgroundFlow& flow,
                         double viscosity, double gap_height, RodDrag& out) {
   if (!law.active) return;
@@ -48,7 +86,7 @@ void add_wall_proximity(const WallProximityLaw& law, const RodGeometry& rod, con
                                    std::abs(law.along) * (1.0 + 2.0 * std::abs(law.along_row_gain)),
                                    std::abs(law.normal_held) * (1.0 + 2.0 * std::abs(law.normal_row_gain)),
                                    std::abs(law.along_held) * (1.0 + 2.0 * std::abs(law.along_row_gain)),
-                                   std::abs(law.squeeze), std::abs(law.squeeze_held)});
+                                   std::abs(law.squeeze), std::abs(law.squeeze_held), std::abs(law.pair_squeeze)});
   if (!(largest > 0.0)) return;
   const double reach = law.screening * gap_height * std::log(std::max(1.0, 1e4 * 2.0 * largest));
   const bool coupled = out.coupled();
@@ -87,6 +125,7 @@ void add_wall_proximity(const WallProximityLaw& law, const RodGeometry& rod, con
     if (coupled) out.coupled_resistance.block<2, 2>(3 * i, 3 * i) += dR;
     out.driving_force[i].head<2>() += dD * flow.velocity(x, y);
   }
+  if (coupled && law.pair_squeeze != 0.0) add_pair_squeeze(law, rod, walls, gap_height, reach, unit, out);
 }
 
 }  // namespace hsrod

@@ -50,6 +50,19 @@
 // the dynamic pore passages, push the rod the wrong way
 // (calibration/validation/pore_passage/README.md).
 //
+// Neighbour pairs (levels 3-4, whose R is coupled): two chain neighbours i, j
+// along the wall that move at different speeds normal to it squeeze fluid
+// along the wall from the approaching one to the receding one, which drags
+// both with it:
+//   F_i,t = F_j,t = k_p s_ij (v_j - v_i).n,   s_ij = t . e_ij,
+// with the reciprocal normal forces F_i,n = -F_j,n = -k_p s_ij (v_i + v_j).t
+// that keep R symmetric (R_{x Omega} = R_{Omega x}: a pair dragged along the
+// wall is turned), k_p in 3 pi mu d times sqrt(s(delta_i) s(delta_j)): the
+// displaced volume does not depend on the gap, only how far it stays
+// confined between row and wall. A rigid translation gets no force along the
+// wall from it and opposite normal forces on the pair (no net force), so the
+// totals of translating rows are unchanged.
+//
 // Gaps below kMinimumGapOverD d are taken at that gap (the fit covers 0.5-3 d;
 // contact is the wall-contact model's job, dynamics/wall_contact.h).
 #pragma once
@@ -74,7 +87,10 @@ struct WallProximityLaw {
   double along_held = 0.0;      // b_t [-]
   double squeeze = 0.0;         // c_q [-]
   double squeeze_held = 0.0;    // b_q [-]
+  double pair_squeeze = 0.0;    // k_p: the neighbour pair's squeeze flow along the wall [-] (below)
   double beta_min = 0.0, beta_max = 1.0;  // confinement range of the resolved cases fitted [-] (information)
+  // the nine above pair_squeeze are what hsrod_fit_wall_proximity fits on translating rows;
+  // pair_squeeze is fitted on the turning rows (calibration/validation/crosscheck_near_wall.md)
   static constexpr int kParameters = 9;
   static constexpr double kMinimumGapOverD = 0.25;
 };
@@ -103,6 +119,16 @@ const WallProximityLaw& wall_proximity_with_images();
 // calibration/data/wall_proximity_fit_reflections.json, level "nonlocal+reflections",
 // equal to hydro/wall_reflections_fit.cpp: calibration_WallReflections.BuiltInLawIsTheFit).
 const WallProximityLaw& wall_proximity_with_reflections();
+
+// k_p fitted on top of wall_proximity_with_images() / _with_reflections() to
+// the along-wall push of the resolved row of 10 turning 0.5 d from a side wall
+// (beta 0.3, campaign near-wall-rotation: +2.595 in 3 pi mu d U at Omega d = U),
+// one number per level. Not set in the shipped laws: in the dynamic pore
+// passage, held out, it turns the rod 0.5 deg less and drifts it 0.0005-0.001 W
+// less, away from neither resolved measure's miss, and beside a pore cylinder
+// at 0.5 d it triples the row's push (calibration/validation/crosscheck_near_wall.md).
+constexpr double kPairSqueezeOnImages = 0.14232264600812172;       // [-]
+constexpr double kPairSqueezeOnReflections = 0.13961478819676637;  // [-]
 
 // Shapes of the single-wall rises (3-D Stokes, see above) at surface gap
 // delta over the sphere radius a [-].

@@ -149,7 +149,6 @@ class FixRodImplicit : public Fix, public PartnerIntegrator, public RodRemovalLi
   std::unordered_map<int, std::vector<int>> apart_neighbours_;     // rods within the interaction reach
   std::map<int, hsrod::UnitObstruction> unit_by_first_;            // the step's units, by first rod
   long apart_sweeps_taken_ = 0;    // run total
-  double apart_largest_change_ = 0.0;  // run's largest last-sweep change [-]
   bool apart() const { return rods_apart_ != RodsApart::off; }
   void prepare_rods_apart(const RodGather &gather);
   // The group's load with the other units' disturbance (at the step's start: q found and kept).

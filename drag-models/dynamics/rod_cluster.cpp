@@ -54,6 +54,29 @@ std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::
   return clusters;
 }
 
+std::vector<std::pair<int, int>> rods_within_reach(const std::vector<std::vector<Eigen::Vector3d>>& rods, double reach,
+                                                   RodSearchBuffers& buffers) {
+  std::vector<std::pair<int, int>> near;
+  if (rods.size() < 2 || !(reach > 0.0)) return near;
+  std::vector<Eigen::Vector3d>& all = buffers.start;
+  std::vector<int>& rod_of = buffers.group_of;
+  all.clear();
+  rod_of.clear();
+  for (std::size_t r = 0; r < rods.size(); ++r)
+    for (const auto& x : rods[r]) {
+      all.push_back(x);
+      rod_of.push_back(static_cast<int>(r));
+    }
+  find_nearby_pairs(all, reach, buffers.cells, buffers.pairs, false);
+  for (const auto& [i, j] : buffers.pairs) {
+    if (rod_of[i] == rod_of[j] || (all[i] - all[j]).norm() > reach) continue;
+    near.emplace_back(std::min(rod_of[i], rod_of[j]), std::max(rod_of[i], rod_of[j]));
+  }
+  std::sort(near.begin(), near.end());
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+  return near;
+}
+
 std::vector<std::pair<int, int>> groups_meeting_in_step(const std::vector<const std::vector<Eigen::Vector3d>*>& starts,
                                                         const std::vector<const std::vector<Eigen::Vector3d>*>& ends,
                                                         const std::vector<const std::vector<double>*>& radii) {

@@ -44,6 +44,13 @@ struct RodSearchBuffers {
 std::vector<std::vector<int>> rod_clusters(const std::vector<std::vector<Eigen::Vector3d>>& rods, double reach,
                                            RodSearchBuffers& buffers);
 
+// Pairs (a, b), a < b, ascending, of rods with a sphere of a and one of b
+// within `reach` [m] (centre distance): the neighbours each rod sees the
+// disturbance of when rods are solved apart (hydro/cross_rod_disturbance.h).
+// The same cell list over all spheres as rod_clusters.
+std::vector<std::pair<int, int>> rods_within_reach(const std::vector<std::vector<Eigen::Vector3d>>& rods, double reach,
+                                                   RodSearchBuffers& buffers);
+
 // Groups of spheres (the rods or clusters of a step: each group's sphere
 // centres at the step's start and end [m], and radii [m]) that meet within
 // the step: pairs (a, b), a < b, ascending, with a sphere of a and one of b

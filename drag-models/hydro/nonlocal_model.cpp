@@ -4,6 +4,7 @@
 #include "common/math_constants.h"
 
 #include "hydro/brinkman_green.h"
+#include "hydro/cross_rod_disturbance.h"
 #include "hydro/dense_model_budget.h"
 #include "hydro/wall_images.h"
 
@@ -112,6 +113,15 @@ WallReflection wall_reflection_from_name(const std::string& name) {
                               "': accepted values are none, images, self_images, reflections");
 }
 
+void NonlocalRodModel::pair_mobility(const Eigen::Vector2d& offset, Eigen::Matrix2d& friction,
+                                     Eigen::Matrix2d* driving) const {
+  const double mu = parameters_.viscosity, H = parameters_.gap_height, d = parameters_.sphere_diameter;
+  const double zo = obstruction_friction_;
+  const Eigen::Matrix2d depth_averaged = kMidplaneFactor * brinkman_green_function(offset, mu, H);
+  friction = near_field_pair_mobility(depth_averaged, offset, mu, H, d, 1.0 / zo, near_field_.friction);
+  if (driving) *driving = near_field_pair_mobility(depth_averaged, offset, mu, H, d, 1.0 / zo, near_field_.driving);
+}
+
 void NonlocalRodModel::solve_coupling(const RodGeometry& rod, const ChannelGeometry* walls,
                                       Eigen::MatrixXd& obstruction, Eigen::MatrixXd& driving) const {
   const int n = rod.size();
@@ -128,19 +138,17 @@ void NonlocalRodModel::solve_coupling(const RodGeometry& rod, const ChannelGeome
   Eigen::MatrixXd coupling = Eigen::MatrixXd::Identity(2 * n, 2 * n);
   Eigen::MatrixXd coupling_driving;
   if (own) coupling_driving = Eigen::MatrixXd::Identity(2 * n, 2 * n);
-  const double mu = parameters_.viscosity, H = parameters_.gap_height, d = parameters_.sphere_diameter;
   for (int i = 0; i < n; ++i) {
     for (int k = i + 1; k < n; ++k) {
       const Eigen::Vector2d offset = (rod.positions[i] - rod.positions[k]).head<2>();
       if (offset.norm() <= 0.0) continue;
-      const Eigen::Matrix2d depth_averaged = kMidplaneFactor * brinkman_green_function(offset, mu, H);
-      const Eigen::Matrix2d g =
-          zo * near_field_pair_mobility(depth_averaged, offset, mu, H, d, 1.0 / zo, near_field_.friction);
+      Eigen::Matrix2d m, md;
+      pair_mobility(offset, m, own ? &md : nullptr);
+      const Eigen::Matrix2d g = zo * m;
       coupling.block<2, 2>(2 * i, 2 * k) += g;
       coupling.block<2, 2>(2 * k, 2 * i) += g;
       if (!own) continue;
-      const Eigen::Matrix2d gd =
-          zo * near_field_pair_mobility(depth_averaged, offset, mu, H, d, 1.0 / zo, near_field_.driving);
+      const Eigen::Matrix2d gd = zo * md;
       coupling_driving.block<2, 2>(2 * i, 2 * k) += gd;
       coupling_driving.block<2, 2>(2 * k, 2 * i) += gd;
     }
@@ -199,7 +207,7 @@ void NonlocalRodModel::evaluate(const RodGeometry& rod, const BackgroundFlow& fl
 }
 
 void NonlocalRodModel::evaluate_with(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out,
-                                     NonlocalState* state, int key) const {
+                                     NonlocalState* state, int key, UnitObstruction* unit) const {
   const int n = rod.size();
   out.resize(n);
   const double zo = obstruction_friction_;
@@ -252,6 +260,12 @@ void NonlocalRodModel::evaluate_with(const RodGeometry& rod, const BackgroundFlo
   // In-plane driving c R_o u, or, when the held load has its own near field,
   // c zo (I + zo M^D)^-1 u.
   const Eigen::VectorXd in_plane = kMidplaneFactor * ((driving->size() > 0 ? *driving : inverse) * u);
+  if (unit) {
+    unit->friction = inverse;
+    if (driving->size() > 0) unit->driving = *driving;
+    else unit->driving.resize(0, 0);
+    unit->lone_driving = in_plane;
+  }
   for (int i = 0; i < n; ++i) {
     out.driving_force[i] << in_plane.segment<2>(2 * i), kMidplaneFactor * (zo * out.driving_force[i].z());
     out.resistance[i] = resistance.block<3, 3>(3 * i, 3 * i);

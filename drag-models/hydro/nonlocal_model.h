@@ -38,6 +38,9 @@
 
 namespace hsrod {
 
+struct UnitObstruction;        // hydro/cross_rod_disturbance.h
+struct RodObstructionForces;   // hydro/cross_rod_disturbance.h
+
 // What level 3 keeps between evaluations (ModelState; owned by the caller,
 // e.g. RodHydrodynamics): per rod, the in-plane coupling inverses solved at
 // the rod's shape of its last full evaluation. The pair couplings depend on
@@ -111,6 +114,18 @@ class NonlocalRodModel : public LocalDragBase {
   // two-sphere rod without its bond.
   void evaluate_rods(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, RodDrag& out,
                      ModelState* state) const override;
+  // Rods solved apart, coupled through their disturbances
+  // (hydro/cross_rod_disturbance.h): the load of `rods` (one rod, or rods
+  // stepped together) alone, as evaluate_rods gives it, and into `unit` its
+  // in-plane obstruction resistances and lone driving.
+  void evaluate_alone(const std::vector<RodGeometry>& rods, const BackgroundFlow& flow, RodDrag& out,
+                      ModelState* state, UnitObstruction& unit) const;
+  // The disturbance rod `source` of another unit makes at the spheres of
+  // `target`: q_target += M_ts P_s, both channels (friction: velocity_*,
+  // held load: driving_*), M_ts the pair mobilities (c G blended into the
+  // near field) that couple the spheres of one rod, for every sphere pair.
+  void add_disturbance(const RodGeometry& target, RodObstructionForces& target_forces, const RodGeometry& source,
+                       const RodObstructionForces& source_forces) const;
   // Beyond the screening length l = H / sqrt(12) the Green's function is
   // the Hele-Shaw potential dipole |G| = H / (24 pi mu r^2)
   // (brinkman_green.h), which decays only algebraically; the coupling of
@@ -141,8 +156,13 @@ class NonlocalRodModel : public LocalDragBase {
   void add_wall_images(const RodGeometry& rod, const ChannelGeometry& walls, Eigen::MatrixXd& coupling,
                        Eigen::MatrixXd& coupling_driving) const;
   bool own_driving() const;
+  // The pair mobility M_ik [m/(N s)] of two spheres at in-plane offset x_i -
+  // x_k [m] (c G blended into the near field) for the friction and, when
+  // `driving` is given, for the held load.
+  void pair_mobility(const Eigen::Vector2d& offset, Eigen::Matrix2d& friction, Eigen::Matrix2d* driving) const;
+  NonlocalState* own_state(ModelState* state) const;
   void evaluate_with(const RodGeometry& rod, const BackgroundFlow& flow, RodDrag& out, NonlocalState* state,
-                     int key) const;
+                     int key, UnitObstruction* unit = nullptr) const;
 
   double film_friction_;
   double obstruction_friction_;

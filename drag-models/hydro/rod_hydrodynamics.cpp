@@ -4,7 +4,9 @@
 #include "flow/make_background_flow.h"
 #include "geometry/pillar_array.h"
 #include "geometry/pore_constriction.h"
+#include "hydro/cross_rod_disturbance.h"
 #include "hydro/explicit_drag_limit.h"
+#include "hydro/nonlocal_model.h"
 
 #include <cstdio>
 #include <sstream>
@@ -137,6 +139,19 @@ void RodHydrodynamics::loads(const RodGeometry& rod, RodDrag& out) {
 void RodHydrodynamics::loads(const std::vector<RodGeometry>& rods, RodDrag& out) {
   if (!model_) throw std::logic_error("RodHydrodynamics::loads before choose_model");
   model_->evaluate_rods(rods, *flow_, out, state_.get());
+}
+
+const NonlocalRodModel* RodHydrodynamics::nonlocal_model() const {
+  return dynamic_cast<const NonlocalRodModel*>(model_.get());
+}
+
+void RodHydrodynamics::loads_apart(const std::vector<RodGeometry>& rods, RodDrag& out, UnitObstruction& unit) {
+  const NonlocalRodModel* level3 = nonlocal_model();
+  if (!level3)
+    throw std::invalid_argument("rods solved apart need the level-3 model nonlocal, not " +
+                                (model_ ? model_->name() : std::string("none")));
+  level3->evaluate_alone(rods, *flow_, out, state_.get(), unit);
+  add_cross_rod_disturbance(unit, out);
 }
 
 double RodHydrodynamics::interaction_reach() const {

@@ -30,6 +30,9 @@
 
 namespace hsrod {
 
+class NonlocalRodModel;
+struct UnitObstruction;
+
 // The scene as the hydrodynamics sees it.
 struct SceneSpec {
   double length = 0.0, width = 0.0, gap_height = 0.0;  // L (x), W (y), H (z) [m]
@@ -110,6 +113,14 @@ class RodHydrodynamics {
   // through the model's interaction between rods (level 3), else each alone
   // and joined (HydrodynamicModel::evaluate_rods).
   void loads(const std::vector<RodGeometry>& rods, RodDrag& out);
+  // Rods solved apart (hydro/cross_rod_disturbance.h): the load of `rods`
+  // (one rod or rods stepped together) alone, with the disturbance of the
+  // other units (unit.driving_disturbance, unit.velocity_disturbance, set by
+  // the caller) added; unit's resistances and lone driving are filled.
+  // Throws std::invalid_argument unless the model is level 3 (nonlocal).
+  void loads_apart(const std::vector<RodGeometry>& rods, RodDrag& out, UnitObstruction& unit);
+  // The level-3 model whose rods can be solved apart; null for other models.
+  const NonlocalRodModel* nonlocal_model() const;
   // Sphere-centre distance [m] within which the model couples two rods
   // (0: no interaction between rods).
   double interaction_reach() const;

@@ -11,6 +11,9 @@
 # wall time (set-up and loop) beside the rods clogged and passed.
 # Usage: tests/benchmarks/bench_many_rods.sh [work-dir]   (after scripts/build.sh)
 # Environment: COUNTS (default "10 100 1000"), MODELS (default "local"),
+#              COUPLING (fix rod/implicit rod_interaction: yes = one joint solve,
+#              lagged, or iterated with SWEEPS > 0 sweeps to SWEEP_TOLERANCE),
+#              RANKS_MODEL (level of the 1 vs 2 ranks run, default local),
 #              STEPS (default 100), REPEATS (default 3), HSROD_BUILD (build/),
 #              PORE_RODS (default: none, skip), PORE_UPSTREAM (default 1800e-6 m),
 #              PORE_TMAX (default 0.1 s: the run stops there if rods are left).
@@ -23,15 +26,16 @@ counts="${COUNTS:-10 100 1000}"
 models="${MODELS:-local}"
 steps="${STEPS:-100}"
 repeats="${REPEATS:-3}"
+coupling=(-var coupling "${COUPLING:-yes}" -var sweeps "${SWEEPS:-0}" -var sweep_tolerance "${SWEEP_TOLERANCE:-1e-6}")
 cd "$work"
-echo "== many rods: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), $(git -C "$root" rev-parse --short HEAD), $steps steps"
+echo "== many rods: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), $(git -C "$root" rev-parse --short HEAD), $steps steps, rod_interaction ${COUPLING:-yes} (sweeps ${SWEEPS:-0})"
 printf "%-8s %7s %12s %14s %16s %8s\n" model rods "loop [s]" "per rod-step" "vs 100 rods" "load"
 for model in $models; do
   ref=""
   for n in $counts; do
     times=()
     for _ in $(seq "$repeats"); do
-      t=$("$build/hsrod" -in "$script" -var nrods "$n" -var model "$model" -var steps "$steps" -log none -echo none |
+      t=$("$build/hsrod" -in "$script" -var nrods "$n" -var model "$model" -var steps "$steps" "${coupling[@]}" -log none -echo none |
           awk '/^Loop time of/ {t = $4} END {print t}')
       times+=("$t")
     done
@@ -45,9 +49,9 @@ done
 # 1 vs 2 ranks: the same rods and the same trajectory (to round-off).
 for ranks in 1 2; do
   cp "$script" "ranks$ranks.in"
-  echo "write_dump all custom final$ranks.txt id x y z modify sort id" >> "ranks$ranks.in"
+  echo "write_dump all custom final$ranks.txt id x y z modify sort id format \"%d %.16e %.16e %.16e\"" >> "ranks$ranks.in"
   mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$build/hsrod" -in "ranks$ranks.in" -var nrods 100 \
-    -var model local -var steps "$steps" -log none -echo none > /dev/null
+    -var model "${RANKS_MODEL:-local}" -var steps "$steps" "${coupling[@]}" -log none -echo none > /dev/null
 done
 /usr/bin/python3 - <<'PY'
 import numpy as np

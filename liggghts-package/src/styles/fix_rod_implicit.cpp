@@ -180,6 +180,7 @@ void FixRodImplicit::setup(int) {
   substeps_taken_ = trials_rejected_ = 0;
   rods_met_in_step_ = 0;
   cost_ = hsrod::StepCost();
+  apart_sweeps_taken_ = 0;
   solver_statistics_at_setup_ = solver_statistics();
   if (reported_) return;
   reported_ = true;
@@ -207,6 +208,17 @@ void FixRodImplicit::setup(int) {
                   rod_contact_ && reach > 0.0 ? " or " : "",
                   reach > 0.0 ? ("the drag model's interaction reach " + std::to_string(reach) + " m").c_str() : "",
                   rod_contact_ ? "hertz" : "none", rod_contact_ ? rod_friction_ : 0.0);
+    if (screen) fputs(msg, screen);
+    if (logfile) fputs(msg, logfile);
+  }
+  if (apart() && comm->me == 0) {
+    char msg[400];
+    std::snprintf(msg, sizeof(msg),
+                  "fix rod/implicit: rod_interaction %s: rods within the drag model's interaction reach %g m are "
+                  "solved apart, each with the others' disturbance %s\n",
+                  rods_apart_ == RodsApart::lagged ? "lagged" : "iterated", drag_->hydrodynamics().interaction_reach(),
+                  rods_apart_ == RodsApart::lagged ? "from their last obstruction forces (lagged)"
+                                                   : "iterated rod by rod to the tolerance (Gauss-Seidel)");
     if (screen) fputs(msg, screen);
     if (logfile) fputs(msg, logfile);
   }
@@ -256,6 +268,9 @@ void FixRodImplicit::post_run() {
   cost_.solver = hsrod::difference(solver_statistics(), solver_statistics_at_setup_);
   if (comm->me != 0) return;
   std::string line = "fix rod/implicit cost: " + cost_.report() + "\n";
+  if (rods_apart_ == RodsApart::iterated)
+    line += "fix rod/implicit: rod_interaction iterated: " + std::to_string(apart_sweeps_taken_) + " sweeps over " +
+            std::to_string(cost_.steps) + " steps\n";
   if (rods_met_in_step_ > 0)
     line += "fix rod/implicit: " + std::to_string(rods_met_in_step_) +
             " time(s) rods stepped apart met within a step: stepped again together, or held at a rod held "

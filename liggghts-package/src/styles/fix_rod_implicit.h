@@ -26,6 +26,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 #include "dynamics/overdamped_rod_step.h"
 #include "dynamics/rod_cluster.h"
 #include "dynamics/step_cost_report.h"
+#include "hydro/cross_rod_disturbance.h"
 
 #include <chrono>
 #include <map>
@@ -136,7 +137,27 @@ class FixRodImplicit : public Fix, public PartnerIntegrator, public RodRemovalLi
   // or interact are stepped together (fix_rod_implicit_clusters.cpp).
   bool rod_contact_;              // rod_contact hertz (E, nu of the rods' material from fix rod/bonds)
   double rod_friction_;           // Coulomb coefficient between rods [-] (default: wall_friction)
-  bool rod_interaction_;          // rod_interaction yes: the drag model couples nearby rods
+  bool rod_interaction_;          // rod_interaction yes: the drag model couples nearby rods (one joint solve)
+  // rod_interaction lagged / iterated N tol: level 3 between rods solved
+  // rod by rod (hydro/cross_rod_disturbance.h; fix_rod_implicit_apart.cpp).
+  enum class RodsApart { off, lagged, iterated };
+  RodsApart rods_apart_ = RodsApart::off;
+  int apart_sweeps_ = 1;           // iterated: most Gauss-Seidel sweeps per step
+  double apart_tolerance_ = 0.0;   // iterated: accepted change of the obstruction forces between sweeps [-]
+  std::map<int, hsrod::RodObstructionForces> obstruction_by_rod_;  // P^D, P^v, q per rod (kept: lagged)
+  std::unordered_map<int, hsrod::RodGeometry> apart_geometry_;     // centres at the step's start [m]
+  std::unordered_map<int, std::vector<int>> apart_neighbours_;     // rods within the interaction reach
+  std::map<int, hsrod::UnitObstruction> unit_by_first_;            // the step's units, by first rod
+  long apart_sweeps_taken_ = 0;    // run total
+  bool apart() const { return rods_apart_ != RodsApart::off; }
+  void prepare_rods_apart(const RodGather &gather);
+  // The group's load with the other units' disturbance (at the step's start: q found and kept).
+  void apart_loads(const std::vector<int> &molecules, const std::vector<hsrod::RodGeometry> &geometries,
+                   hsrod::RodDrag &out, bool step_start);
+  void update_obstruction(const std::vector<int> &molecules, const std::vector<Eigen::Vector3d> &velocities);
+  double obstruction_change_since(const std::map<int, hsrod::RodObstructionForces> &before) const;
+  void parse_rod_interaction(int narg, char **arg, int &iarg);
+  void report_unconverged_sweeps(double change);
   int rod_contacts_;              // last step, rods touching another rod
   double rod_contact_force_;      // last step, sum of |rod-rod Hertz force| [N]
   std::map<std::vector<int>, hsrod::OverdampedRodSolver> solvers_by_cluster_;  // rods stepped together, by molecule IDs

@@ -110,6 +110,7 @@ bool FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
   }
   std::vector<hsrod::RodGeometry> geometries;
   for (int molecule : molecules) geometries.push_back(rod_geometry(hydro, molecule, gather.rods.at(molecule)));
+  bool step_start = true;  // the first evaluation: the disturbance of rods apart found there
   const auto evaluate = [&](const std::vector<Eigen::Vector3d> &at, hsrod::RodDrag &out) {
     const Clock::time_point drag_start = Clock::now();
     std::size_t offset = 0;
@@ -117,12 +118,14 @@ bool FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
       std::copy(at.begin() + offset, at.begin() + offset + g.positions.size(), g.positions.begin());
       offset += g.positions.size();
     }
-    if (joint) hydro.loads(geometries, out);
+    if (apart()) apart_loads(molecules, geometries, out, step_start);
+    else if (joint) hydro.loads(geometries, out);
     else hydro.loads(geometries.front(), out);
     cost_.drag_seconds += seconds_since(drag_start);
   };
   hsrod::RodDrag &drag = step.drag;
   evaluate(rod.positions, drag);
+  step_start = false;
   cost_.sphere_steps += n;
 
   std::string name = "rod " + std::to_string(first);

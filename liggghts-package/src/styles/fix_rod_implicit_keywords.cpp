@@ -52,7 +52,7 @@ void FixRodImplicit::parse_keywords(int narg, char **arg) {
       if (!(rod_friction_ >= 0.0 && rod_friction_ <= 10.0))
         error->all(FLERR, "fix rod/implicit: rod_friction must be in [0, 10] (Coulomb coefficient between rods)");
     } else if (strcmp(key, "rod_interaction") == 0) {
-      rod_interaction_ = parse_yes_no(error, "fix rod/implicit", key, val);
+      parse_rod_interaction(narg, arg, iarg);
     } else if (strcmp(key, "max_displacement") == 0) {
       max_displacement_ = parse_number(error, "fix rod/implicit", key, val);
       if (!(max_displacement_ > 0.0 && max_displacement_ <= 10.0))

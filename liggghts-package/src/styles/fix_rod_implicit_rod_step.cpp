@@ -45,6 +45,12 @@ hsrod::WallContactParameters FixRodImplicit::wall_contact_parameters() const {
 // The rod's drag at the step's start, evaluated into its scratch.
 void FixRodImplicit::evaluate_rod_drag(int molecule, RodScratch &scratch) {
   const Clock::time_point drag_start = Clock::now();
+  if (apart()) {
+    apart_loads({molecule}, {scratch.geometry}, scratch.drag, true);
+    cost_.drag_seconds += seconds_since(drag_start);
+    cost_.sphere_steps += scratch.geometry.size();
+    return;
+  }
   try {
     drag_->hydrodynamics().loads(scratch.geometry, scratch.drag);
   } catch (const std::exception &e) {
@@ -84,11 +90,12 @@ bool FixRodImplicit::step_rod_alone(int molecule, const std::vector<GatheredSphe
   if (guard_) {
     // Accuracy guard: substeps (drag re-evaluated at each) or a refusal.
     RodScratch *at = &scratch;  // two pointers: std::function keeps them without allocating
-    auto drag_at = [this, at](const hsrod::OverdampedRod &moved, hsrod::RodDrag &out) {
+    auto drag_at = [this, at, molecule](const hsrod::OverdampedRod &moved, hsrod::RodDrag &out) {
       const Clock::time_point substep_drag_start = Clock::now();
       at->substep_geometry = at->geometry;
       at->substep_geometry.positions = moved.positions;
-      drag_->hydrodynamics().loads(at->substep_geometry, out);
+      if (apart()) apart_loads({molecule}, {at->substep_geometry}, out, false);
+      else drag_->hydrodynamics().loads(at->substep_geometry, out);
       cost_.drag_seconds += seconds_since(substep_drag_start);
     };
     try {

@@ -47,6 +47,11 @@ void FixRodImplicit::step_group(const RodGather &gather, const std::vector<int> 
     taken = step_cluster(gather, molecules, walls, step);
   }
   if (taken) {
+    if (apart()) {  // its obstruction forces at the step's velocities, for the groups stepped after it
+      const hsrod::OverdampedStepResult &result =
+          step.alone ? (guard_ ? step.scratch->report.result : step.scratch->result) : step.result;
+      update_obstruction(molecules, result.velocities);
+    }
     pending_.push_back(std::move(step));
   } else if (!step.alone) {  // held at a box face: its bond state as stepped
     joint_strain_ = std::max(joint_strain_, step.strain);
@@ -167,16 +172,29 @@ void FixRodImplicit::hold_at_held_rod(const RodGather &gather, const PendingStep
 std::vector<std::vector<int>> FixRodImplicit::step_all(const RodGather &gather,
                                                        const hsrod::WallContactParameters &walls, StepTotals &totals) {
   const std::vector<std::vector<int>> clusters = step_clusters(gather);
-  pending_.clear();
-  joint_strain_ = joint_energy_ = 0.0;
-  // Rods alone first, then clusters: the order the steps were always taken in.
-  for (const std::vector<int> &cluster : clusters)
-    if (cluster.size() == 1) step_group(gather, cluster, walls);
-  for (const std::vector<int> &cluster : clusters)
-    if (cluster.size() > 1) step_group(gather, cluster, walls);
-  if (rod_contact_)
-    for (int round = 0; round < kContactRounds && merge_rods_meeting_in_step(gather, walls); ++round) {
-    }
+  if (apart()) prepare_rods_apart(gather);
+  // Rods apart, iterated: sweeps of every group's step from the same start
+  // until the obstruction forces settle (fix_rod_implicit_apart.cpp).
+  for (int sweep = 0; sweep < apart_sweeps_; ++sweep) {
+    const std::map<int, hsrod::RodObstructionForces> before =
+        rods_apart_ == RodsApart::iterated ? obstruction_by_rod_ : std::map<int, hsrod::RodObstructionForces>();
+    pending_.clear();
+    stepped_rods_.clear();
+    joint_strain_ = joint_energy_ = 0.0;
+    // Rods alone first, then clusters: the order the steps were always taken in.
+    for (const std::vector<int> &cluster : clusters)
+      if (cluster.size() == 1) step_group(gather, cluster, walls);
+    for (const std::vector<int> &cluster : clusters)
+      if (cluster.size() > 1) step_group(gather, cluster, walls);
+    if (rod_contact_)
+      for (int round = 0; round < kContactRounds && merge_rods_meeting_in_step(gather, walls); ++round) {
+      }
+    if (rods_apart_ != RodsApart::iterated) break;
+    ++apart_sweeps_taken_;
+    const double change = obstruction_change_since(before);
+    if (sweep > 0 && change <= apart_tolerance_) break;
+    if (sweep + 1 == apart_sweeps_) report_unconverged_sweeps(change);
+  }
   // Totals summed in the same order (rods alone, then clusters).
   std::vector<std::vector<int>> stepped;
   for (int joint = 0; joint < 2; ++joint)

@@ -155,10 +155,28 @@ struct OverdampedRodSolver::Workspace {
   // A chain with non-local drag: its blocks above plus the dense resistance,
   // solved through the Schur complement on the coupled translations.
   CoupledChainSolve coupled_chain;
+  // Chains with pair contacts off the band (chain_contact_solve.cpp): the
+  // band's links (spheres k, k+1 coupled), the contacts off it with their
+  // (i, j) and (j, i) blocks, the p spheres they couple (ascending; index of
+  // each sphere or -1), each one's chain segment [first, last] and its
+  // columns T^-1 E_s there (6x6 per sphere of the segment), M and the
+  // factors of I + G M.
+  struct OffBandContact {
+    int i, j;
+    Matrix6d ij, ji;
+  };
+  std::vector<char> band_linked;
+  std::vector<OffBandContact> off_band;
+  std::vector<int> coupled_spheres, coupled_index, coupled_column_start;
+  std::vector<std::pair<int, int>> coupled_segment;
+  std::vector<Matrix6d> coupled_columns;
+  Eigen::MatrixXd coupling, capacitance;
+  DenseLu capacitance_lu;
+  mutable Eigen::VectorXd coupled_work, coupled_load;  // y and M y of a solve
 
   // The factorisation of the last step, for newton_correction: which one
   // is kept, and the last step's solution dy and dt.
-  enum class Kept { none, banded, coupled_chain, dense, sparse };
+  enum class Kept { none, banded, coupled_chain, chain_contacts, dense, sparse };
   Kept kept = Kept::none;
   Eigen::VectorXd last_dy;
   double last_dt = 0.0;
@@ -210,6 +228,8 @@ struct OverdampedRodSolver::Workspace {
   const Eigen::VectorXd& solve(const OverdampedRod& rod, const RodDrag& drag, double dt, bool fused,
                                bool eliminate_in_pass);
   const Eigen::VectorXd& solve_chain(const RodDrag& drag, double dt, int n);
+  const Eigen::VectorXd& solve_chain_with_contacts(double dt, int n);
+  void apply_off_band_correction(Eigen::VectorXd& x) const;
   const Eigen::VectorXd& solve_in_groups(const OverdampedRod& rod, const RodDrag& drag, double dt);
   const Eigen::VectorXd& solve_dense(const OverdampedRod& rod, const RodDrag& drag, double dt);
   const Eigen::VectorXd& solve_sparse(const OverdampedRod& rod, const RodDrag& drag, double dt);

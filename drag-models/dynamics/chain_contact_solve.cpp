@@ -13,77 +13,126 @@
 // column of sphere s fills only its own segment. Cost per step: one band
 // elimination, 6 columns per coupled sphere over its segment, and a dense
 // LU of 6p x 6p, against a sparse LU whose fill spans the cluster.
+//
+// When the result cannot be trusted the same matrix goes to the sparse LU
+// instead (solve_chain_contacts_sparse): a non-finite band pivot (T
+// singular: a sphere nothing holds), a capacitance matrix whose condition
+// estimate exceeds 1 / capacitance_rcond_floor, a normwise backward error
+// above backward_error_ceiling after one step of iterative refinement
+// (Woodbury's solve is not backward stable in general: Yip, SIAM J. Sci.
+// Stat. Comput. 7 (1986) 507), or more than max_capacitance_spheres
+// coupled spheres, where the dense LU's (6p)^3 outgrows the sparse LU.
 #include "dynamics/overdamped_rod_step_internal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace hsrod {
 
 namespace {
 
-// A pair contact's 6x6 blocks of the step's matrix: (i, i), (j, j), (i, j),
-// (j, i): Hertz stiffness on the translations and friction C / dt.
-struct PairContactBlocks {
-  Matrix6d ii, jj, ij, ji;
-};
-
-PairContactBlocks pair_contact_blocks(const SpherePairContact& c, double dt) {
-  PairContactBlocks b;
-  b.ii.setZero();
-  b.ii.block<3, 3>(0, 0) = c.stiffness;
-  b.jj = b.ii;
-  b.ij = -b.ii;
-  b.ji = -b.ii;
-  if (c.rubbing) {
-    b.ii += c.friction.block<6, 6>(0, 0) / dt;
-    b.jj += c.friction.block<6, 6>(6, 6) / dt;
-    b.ij += c.friction.block<6, 6>(0, 6) / dt;
-    b.ji += c.friction.block<6, 6>(6, 0) / dt;
-  }
-  return b;
-}
+// Below this reciprocal condition estimate of I + G M (1-norm, Eigen's
+// PartialPivLU::rcond) its solve keeps fewer than ~4 of double's 16
+// digits; the sparse LU of A then decides.
+constexpr double capacitance_rcond_floor = 1e-12;
+// Normwise backward error ||b - A x|| / (||A|| ||x|| + ||b||) (inf-norms)
+// accepted: ~500 unit round-offs, the growth a partial-pivoting LU of a
+// few hundred unknowns shows in practice (Higham, "Accuracy and Stability of
+// Numerical Algorithms", 2nd ed., sec. 9.4), so a solve passing it is as
+// good as the sparse LU's.
+constexpr double backward_error_ceiling = 1e-13;
+// Coupled spheres beyond which the dense 6p x 6p LU costs more than the
+// sparse LU of the whole cluster (bench_many_rods.sh's pore scene).
+constexpr int max_capacitance_spheres = 150;
 
 }  // namespace
 
-// The blocks assembled (fused) and the wall contacts added: adds the pair
-// contacts, factorises and solves; `rhs` holds the right-hand side.
-const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain_with_contacts(double dt, int n) {
+// The pair contacts' blocks into the band (diagonal; neighbouring spheres)
+// or the off-band list, in add_couplings' order (stiffness, then friction
+// C / dt), so that the sums are those of the general paths.
+void OverdampedRodSolver::Workspace::add_pair_contact_blocks(double dt, int n) {
   band_linked.assign(n, 0);
   for (int k = 0; k + 1 < n; ++k) band_linked[k] = bonded(k, k + 1) ? 1 : 0;
-  coupled_index.assign(n, -1);
-  coupled_spheres.clear();
   off_band.clear();
   for (const SpherePairContact& c : pair_contacts) {
-    const PairContactBlocks b = pair_contact_blocks(c, dt);
-    diagonal[c.i] += b.ii;
-    diagonal[c.j] += b.jj;
-    if (c.j == c.i + 1 || c.i == c.j + 1) {
+    diagonal[c.i].block<3, 3>(0, 0) += c.stiffness;
+    diagonal[c.j].block<3, 3>(0, 0) += c.stiffness;
+    Matrix6d ij = Matrix6d::Zero(), ji = Matrix6d::Zero();
+    ij.block<3, 3>(0, 0) = -c.stiffness;
+    ji.block<3, 3>(0, 0) = -c.stiffness;
+    if (c.rubbing) {
+      diagonal[c.i] += c.friction.block<6, 6>(0, 0) / dt;
+      ij += c.friction.block<6, 6>(0, 6) / dt;
+      ji += c.friction.block<6, 6>(6, 0) / dt;
+      diagonal[c.j] += c.friction.block<6, 6>(6, 6) / dt;
+    }
+    if (c.j == c.i + 1 || c.i == c.j + 1) {  // not bonded: the band's block is zero so far
       const bool ascending = c.j == c.i + 1;
       const int first = ascending ? c.i : c.j;
-      upper[first] += ascending ? b.ij : b.ji;
-      lower[first + 1] += ascending ? b.ji : b.ij;
+      upper[first] += ascending ? ij : ji;
+      lower[first + 1] += ascending ? ji : ij;
       band_linked[first] = 1;
       continue;
     }
-    off_band.push_back({c.i, c.j, b.ij, b.ji});
+    off_band.push_back({c.i, c.j, ij, ji});
+  }
+}
+
+// The blocks assembled (fused) and the wall contacts added: adds the pair
+// contacts, factorises and solves; `rhs` holds the right-hand side and
+// becomes the solution.
+const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain_with_contacts(double dt, int n) {
+  add_pair_contact_blocks(dt, n);
+  if (off_band.empty()) {  // a block-tridiagonal matrix: the chain's own elimination
+    solve_banded(n);
+    kept = Kept::banded;
+    ++statistics.banded_steps;
+    return rhs;
+  }
+  coupled_spheres.clear();
+  for (const OffBandContact& c : off_band) {
     coupled_spheres.push_back(c.i);
     coupled_spheres.push_back(c.j);
   }
-  solve_banded(n);  // rhs <- T^-1 b; factors of T kept
-  kept = Kept::banded;
-  ++statistics.banded_steps;
-  if (off_band.empty()) return rhs;
-
   std::sort(coupled_spheres.begin(), coupled_spheres.end());
   coupled_spheres.erase(std::unique(coupled_spheres.begin(), coupled_spheres.end()), coupled_spheres.end());
-  const int p = static_cast<int>(coupled_spheres.size());
-  for (int a = 0; a < p; ++a) coupled_index[coupled_spheres[a]] = a;
-  coupling.setZero(6 * p, 6 * p);
-  for (const OffBandContact& c : off_band) {
-    coupling.block<6, 6>(6 * coupled_index[c.i], 6 * coupled_index[c.j]) += c.ij;
-    coupling.block<6, 6>(6 * coupled_index[c.j], 6 * coupled_index[c.i]) += c.ji;
+  // The matrix as assembled, for the residual and the sparse fallback (the
+  // elimination overwrites diagonal and upper; lower it leaves).
+  band_diagonal.assign(diagonal.begin(), diagonal.begin() + n);
+  band_upper.assign(upper.begin(), upper.begin() + n);
+  band_rhs = rhs;
+  if (static_cast<int>(coupled_spheres.size()) > max_capacitance_spheres) return solve_chain_contacts_sparse(n);
+  if (!factorise_capacitance(n)) return solve_chain_contacts_sparse(n);
+  apply_off_band_correction(rhs);
+  // One step of iterative refinement where the backward error is above
+  // round-off, with the same factors; the sparse LU if still above.
+  if (chain_contact_backward_error(rhs) > backward_error_ceiling) {
+    refinement = chain_contact_residual;
+    resolve_banded(refinement);
+    apply_off_band_correction(refinement);
+    rhs += refinement;
+    if (!(chain_contact_backward_error(rhs) <= backward_error_ceiling)) return solve_chain_contacts_sparse(n);
   }
-  // Columns T^-1 E_s over each coupled sphere's segment: forward elimination
-  // from s (the entries before s stay zero), back substitution over the segment.
+  kept = Kept::chain_contacts;
+  ++statistics.banded_steps;
+  ++statistics.capacitance_steps;
+  return rhs;
+}
+
+// rhs <- T^-1 b, the columns T^-1 E_s of the coupled spheres and the LU of
+// I + G M; false where the band or the capacitance matrix is singular or
+// too ill-conditioned to trust.
+bool OverdampedRodSolver::Workspace::factorise_capacitance(int n) {
+  const int p = static_cast<int>(coupled_spheres.size());
+  coupled_index.assign(n, -1);
+  for (int a = 0; a < p; ++a) coupled_index[coupled_spheres[a]] = a;
+  solve_banded(n);  // rhs <- T^-1 b; factors of T kept
+  if (!rhs.allFinite()) return false;
+  // Each coupled sphere's chain segment [first, last] and the coupled
+  // spheres in it, [begin, end) in coupled_spheres (ascending).
   coupled_segment.resize(p);
+  coupled_in_segment.resize(p);
   coupled_column_start.resize(p + 1);
   coupled_column_start[0] = 0;
   for (int a = 0; a < p; ++a) {
@@ -92,8 +141,14 @@ const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain_with_contacts
     while (first > 0 && band_linked[first - 1]) --first;
     while (last + 1 < n && band_linked[last]) ++last;
     coupled_segment[a] = {first, last};
+    coupled_in_segment[a] = {
+        static_cast<int>(std::lower_bound(coupled_spheres.begin(), coupled_spheres.end(), first) - coupled_spheres.begin()),
+        static_cast<int>(std::upper_bound(coupled_spheres.begin(), coupled_spheres.end(), last) - coupled_spheres.begin())};
     coupled_column_start[a + 1] = coupled_column_start[a] + (last - first + 1);
   }
+  // Columns T^-1 E_s over each coupled sphere's segment: forward elimination
+  // from s (the entries before s stay zero), back substitution over the
+  // segment, with the factors solve_banded left (upper[k] = A'(k,k)^-1 A(k,k+1)).
   coupled_columns.resize(coupled_column_start[p]);
   for (int a = 0; a < p; ++a) {
     const int s = coupled_spheres[a], first = coupled_segment[a].first, last = coupled_segment[a].second;
@@ -107,21 +162,23 @@ const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain_with_contacts
     }
     for (int k = last - 1; k >= first; --k) y[k].noalias() -= upper[k] * y[k + 1];
   }
-  // I + G M, G(t, s) = (T^-1 E_s) at sphere t when t is in s's segment.
+  // I + G M, G(t, a) = (T^-1 E_a) at sphere t when t is in a's segment; M
+  // holds a contact (i, j)'s blocks at (a_i, a_j) and (a_j, a_i).
   capacitance.setIdentity(6 * p, 6 * p);
-  for (int a = 0; a < p; ++a)
-    for (int t = 0; t < p; ++t) {
-      const int sphere = coupled_spheres[t];
-      if (sphere < coupled_segment[a].first || sphere > coupled_segment[a].second) continue;
-      const Matrix6d& g = coupled_columns[coupled_column_start[a] + sphere - coupled_segment[a].first];
-      for (int b = 0; b < p; ++b)
-        if (!coupling.block<6, 6>(6 * a, 6 * b).isZero(0.0))
-          capacitance.block<6, 6>(6 * t, 6 * b).noalias() += g * coupling.block<6, 6>(6 * a, 6 * b);
-    }
-  capacitance_lu.compute_in_place(capacitance);
-  kept = Kept::chain_contacts;
-  apply_off_band_correction(rhs);
-  return rhs;
+  const auto add_column_times = [&](int a, int b, const Matrix6d& m) {  // column b += G(:, a) m
+    const int first = coupled_segment[a].first;
+    for (int t = coupled_in_segment[a].first; t < coupled_in_segment[a].second; ++t)
+      capacitance.block<6, 6>(6 * t, 6 * b).noalias() +=
+          coupled_columns[coupled_column_start[a] + coupled_spheres[t] - first] * m;
+  };
+  for (const OffBandContact& c : off_band) {
+    add_column_times(coupled_index[c.i], coupled_index[c.j], c.ij);
+    add_column_times(coupled_index[c.j], coupled_index[c.i], c.ji);
+  }
+  if (!capacitance.allFinite()) return false;
+  capacitance_lu.compute(capacitance);
+  const double rcond = capacitance_lu.rcond();
+  return rcond >= capacitance_rcond_floor;  // false for NaN too
 }
 
 // x <- x - T^-1 E M y with (I + G M) y = E^T x, for x = T^-1 b.
@@ -129,15 +186,83 @@ void OverdampedRodSolver::Workspace::apply_off_band_correction(Eigen::VectorXd& 
   const int p = static_cast<int>(coupled_spheres.size());
   coupled_work.resize(6 * p);
   for (int a = 0; a < p; ++a) coupled_work.segment<6>(6 * a) = x.segment<6>(6 * coupled_spheres[a]);
-  capacitance_lu.solve_in_place(coupled_work);
-  coupled_load.noalias() = coupling * coupled_work;
+  coupled_work = capacitance_lu.solve(coupled_work).eval();
+  coupled_load.setZero(6 * p);  // M y
+  for (const OffBandContact& c : off_band) {
+    const int a = coupled_index[c.i], b = coupled_index[c.j];
+    coupled_load.segment<6>(6 * a).noalias() += c.ij * coupled_work.segment<6>(6 * b);
+    coupled_load.segment<6>(6 * b).noalias() += c.ji * coupled_work.segment<6>(6 * a);
+  }
   for (int a = 0; a < p; ++a) {
     const int first = coupled_segment[a].first, last = coupled_segment[a].second;
     const Vector6d u = coupled_load.segment<6>(6 * a);
-    if (u.isZero(0.0)) continue;
     for (int k = first; k <= last; ++k)
       x.segment<6>(6 * k).noalias() -= coupled_columns[coupled_column_start[a] + k - first] * u;
   }
+}
+
+// ||b - A x|| / (||A|| ||x|| + ||b||) in inf-norms, A from the blocks as
+// assembled; leaves b - A x in chain_contact_residual.
+double OverdampedRodSolver::Workspace::chain_contact_backward_error(const Eigen::VectorXd& x) {
+  const int n = static_cast<int>(band_diagonal.size());
+  chain_contact_residual = band_rhs;
+  row_sums.setZero(6 * n);  // sum_j |A(r, j)|
+  for (int k = 0; k < n; ++k) {
+    auto r = chain_contact_residual.segment<6>(6 * k);
+    r.noalias() -= band_diagonal[k] * x.segment<6>(6 * k);
+    row_sums.segment<6>(6 * k) += band_diagonal[k].cwiseAbs().rowwise().sum();
+    if (k + 1 < n) {
+      r.noalias() -= band_upper[k] * x.segment<6>(6 * (k + 1));
+      row_sums.segment<6>(6 * k) += band_upper[k].cwiseAbs().rowwise().sum();
+    }
+    if (k > 0) {
+      r.noalias() -= lower[k] * x.segment<6>(6 * (k - 1));
+      row_sums.segment<6>(6 * k) += lower[k].cwiseAbs().rowwise().sum();
+    }
+  }
+  for (const OffBandContact& c : off_band) {
+    chain_contact_residual.segment<6>(6 * c.i).noalias() -= c.ij * x.segment<6>(6 * c.j);
+    chain_contact_residual.segment<6>(6 * c.j).noalias() -= c.ji * x.segment<6>(6 * c.i);
+    row_sums.segment<6>(6 * c.i) += c.ij.cwiseAbs().rowwise().sum();
+    row_sums.segment<6>(6 * c.j) += c.ji.cwiseAbs().rowwise().sum();
+  }
+  const double scale = row_sums.maxCoeff() * x.lpNorm<Eigen::Infinity>() + band_rhs.lpNorm<Eigen::Infinity>();
+  const double error = chain_contact_residual.lpNorm<Eigen::Infinity>();
+  if (!std::isfinite(error) || !std::isfinite(scale)) return std::numeric_limits<double>::infinity();
+  return scale > 0.0 ? error / scale : 0.0;
+}
+
+// The fallback: the same matrix (band blocks and off-band contacts as
+// assembled) and right-hand side through the sparse LU (factorize_sparse).
+const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain_contacts_sparse(int n) {
+  triplets.clear();
+  const auto add_block = [this](int row, int col, const Matrix6d& block) {
+    for (int b = 0; b < 6; ++b)
+      for (int a = 0; a < 6; ++a) triplets.emplace_back(6 * row + a, 6 * col + b, block(a, b));
+  };
+  for (int k = 0; k < n; ++k) {
+    add_block(k, k, band_diagonal[k]);
+    if (k + 1 < n && band_linked[k]) {
+      add_block(k, k + 1, band_upper[k]);
+      add_block(k + 1, k, lower[k + 1]);
+    }
+  }
+  for (const OffBandContact& c : off_band) {
+    add_block(c.i, c.j, c.ij);
+    add_block(c.j, c.i, c.ji);
+  }
+  matrix.resize(6 * n, 6 * n);
+  matrix.setFromTriplets(triplets.begin(), triplets.end());
+  ++statistics.sparse_steps;
+  ++statistics.capacitance_fallbacks;
+  if (!factorize_sparse()) {  // singular: a non-finite update for the step guard (as solve_sparse)
+    dy.setConstant(6 * n, std::numeric_limits<double>::quiet_NaN());
+    kept = Kept::none;
+    return dy;
+  }
+  dy = lu.solve(band_rhs);
+  kept = Kept::sparse;
+  return dy;
 }
 
 }  // namespace hsrod

@@ -66,6 +66,7 @@ void OverdampedRodSolver::iterate(OverdampedRod& rod, const std::vector<Eigen::V
 int OverdampedRodSolver::pattern_analyses() const { return workspace_->analyses; }
 const OverdampedSolverStatistics& OverdampedRodSolver::statistics() const { return workspace_->statistics; }
 void OverdampedRodSolver::set_linear_solver(LinearSolver method) { workspace_->method = method; }
+void OverdampedRodSolver::set_chain_contact_capacitance(bool on) { workspace_->chain_contact_capacitance = on; }
 
 OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag, double dt,
                                          const ChannelGeometry* geometry, const WallContactParameters* walls) {
@@ -168,7 +169,8 @@ void OverdampedRodSolver::step_once(OverdampedRod& rod, const RodDrag& drag, dou
   // pass (solve_banded's operations in its order: the same result to the
   // last bit), while its blocks are still in cache.
   const bool automatic = w.method == LinearSolver::automatic;
-  const bool fused = automatic && w.chain && n > 0 && (w.pair_contacts.empty() || !drag.coupled());
+  const bool fused = automatic && w.chain && n > 0 &&
+                     (w.pair_contacts.empty() || (!drag.coupled() && w.chain_contact_capacitance));
   const bool eliminate_in_pass = fused && !drag.coupled() && w.ordered_chain && w.pair_contacts.empty();
   w.assemble(rod, drag, dt, fused, eliminate_in_pass);
   const Clock::time_point t_bonds = Clock::now();

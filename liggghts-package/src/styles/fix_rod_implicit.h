@@ -137,6 +137,7 @@ class FixRodImplicit : public Fix, public PartnerIntegrator, public RodRemovalLi
   bool rod_contact_;              // rod_contact hertz (E, nu of the rods' material from fix rod/bonds)
   double rod_friction_;           // Coulomb coefficient between rods [-] (default: wall_friction)
   bool rod_interaction_;          // rod_interaction yes: the drag model couples nearby rods
+  bool contact_capacitance_;      // contact_solve capacitance: chains with off-band contacts by Woodbury, else the general LU
   int rod_contacts_;              // last step, rods touching another rod
   double rod_contact_force_;      // last step, sum of |rod-rod Hertz force| [N]
   std::map<std::vector<int>, hsrod::OverdampedRodSolver> solvers_by_cluster_;  // rods stepped together, by molecule IDs

@@ -177,7 +177,8 @@ struct OverdampedRodSolver::Workspace {
   std::vector<Matrix6d> coupled_columns;
   std::vector<Matrix6d> band_diagonal, band_upper;
   Eigen::VectorXd band_rhs, chain_contact_residual, row_sums, refinement;
-  Eigen::MatrixXd capacitance;
+  Eigen::MatrixXd capacitance;  // I + G M, equilibrated: Dr (I + G M) Dc
+  Eigen::VectorXd capacitance_row_scale, capacitance_column_scale;  // Dr, Dc (powers of two)
   Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_lu;
   mutable Eigen::VectorXd coupled_work, coupled_load;  // y and M y of a solve
 
@@ -238,6 +239,7 @@ struct OverdampedRodSolver::Workspace {
   const Eigen::VectorXd& solve_chain_with_contacts(double dt, int n);
   void add_pair_contact_blocks(double dt, int n);
   bool factorise_capacitance(int n);
+  void equilibrate_capacitance();
   void apply_off_band_correction(Eigen::VectorXd& x) const;
   double chain_contact_backward_error(const Eigen::VectorXd& x);
   const Eigen::VectorXd& solve_chain_contacts_sparse(int n);

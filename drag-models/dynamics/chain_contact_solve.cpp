@@ -39,8 +39,8 @@ constexpr double capacitance_rcond_floor = 1e-12;
 // Componentwise backward error (chain_contact_backward_error) accepted:
 // ~45 unit round-offs. Passing it, x solves A + dA with |dA| <= 1e-14 |A|
 // entry by entry, as a partial-pivoting LU does in practice (Higham, sec.
-// 9.3); Woodbury's first solve is often at 1e-13 - 1e-12 in the pore
-// scene's clusters, one refinement brings it to ~2e-16.
+// 9.3); Woodbury's first solve is at 4e-14 - 2e-12 in the clusters of
+// test_chain_contact_solve.cpp, one refinement brings it to ~2e-16.
 constexpr double backward_error_ceiling = 1e-14;
 // Coupled spheres beyond which the dense 6p x 6p LU costs more than the
 // sparse LU of the whole cluster (bench_many_rods.sh's pore scene).

@@ -66,6 +66,7 @@ void OverdampedRodSolver::iterate(OverdampedRod& rod, const std::vector<Eigen::V
 int OverdampedRodSolver::pattern_analyses() const { return workspace_->analyses; }
 const OverdampedSolverStatistics& OverdampedRodSolver::statistics() const { return workspace_->statistics; }
 void OverdampedRodSolver::set_linear_solver(LinearSolver method) { workspace_->method = method; }
+void OverdampedRodSolver::set_chain_contact_capacitance(bool on) { workspace_->chain_contact_capacitance = on; }
 
 OverdampedStepResult overdamped_rod_step(OverdampedRod& rod, const RodDrag& drag, double dt,
                                          const ChannelGeometry* geometry, const WallContactParameters* walls) {
@@ -152,8 +153,11 @@ void OverdampedRodSolver::step_once(OverdampedRod& rod, const RodDrag& drag, dou
   const Clock::time_point t_contacts = Clock::now();
   if (w.origin_positions) w.set_origin_load(rod, drag, dt);  // a Newton iteration: the iterate's offset loads
 
-  // A chain (the common case) goes to the block-tridiagonal solve unless a
-  // self-contact appears: its blocks are assembled while the bonds are
+  // A chain (the common case, and the rods of a contact cluster, each rod's
+  // spheres consecutive) goes to the block-tridiagonal solve; pair contacts
+  // (self-contacts, rods touching) enter the band or, off it, the
+  // capacitance solve of dynamics/chain_contact_solve.cpp (with non-local
+  // drag they go to the general paths instead). Its blocks are assembled while the bonds are
   // evaluated, each bond's 12 x 12 Jacobian used where it is made and not
   // stored (at 10 000 spheres the stored Jacobians alone are 11 MB, beyond
   // the caches). The sums are those of add_couplings in its order: drag,
@@ -165,8 +169,9 @@ void OverdampedRodSolver::step_once(OverdampedRod& rod, const RodDrag& drag, dou
   // pass (solve_banded's operations in its order: the same result to the
   // last bit), while its blocks are still in cache.
   const bool automatic = w.method == LinearSolver::automatic;
-  const bool fused = automatic && w.chain && n > 0 && w.pair_contacts.empty();
-  const bool eliminate_in_pass = fused && !drag.coupled() && w.ordered_chain;
+  const bool fused = automatic && w.chain && n > 0 &&
+                     (w.pair_contacts.empty() || (!drag.coupled() && w.chain_contact_capacitance));
+  const bool eliminate_in_pass = fused && !drag.coupled() && w.ordered_chain && w.pair_contacts.empty();
   w.assemble(rod, drag, dt, fused, eliminate_in_pass);
   const Clock::time_point t_bonds = Clock::now();
 

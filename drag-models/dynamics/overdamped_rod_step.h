@@ -113,6 +113,9 @@ struct OverdampedSolverStatistics {
   long sparse_steps = 0;         // steps solved by the sparse LU
   long dense_steps = 0;          // steps solved by a dense LU (of the whole matrix, or of a chain's coupled translations)
   long friction_repeats = 0;     // steps repeated to put wall friction at the end velocities (counted in steps too)
+  // Chains with pair contacts off the band (dynamics/chain_contact_solve.cpp):
+  long capacitance_steps = 0;      // solved by the capacitance solve (counted in banded_steps)
+  long capacitance_fallbacks = 0;  // refused by it, solved by the sparse LU (counted in sparse_steps)
 };
 
 // A rod at rest in its layout (identity orientations), bonds from `material`.
@@ -191,6 +194,11 @@ class OverdampedRodSolver {
 
   const OverdampedSolverStatistics& statistics() const;
   void set_linear_solver(LinearSolver method);
+  // Chains with pair contacts off the band (contact clusters of rods, a
+  // folded rod) with local drag: by the band elimination and capacitance
+  // solve of dynamics/chain_contact_solve.cpp (true, the default), or by the
+  // general dense / sparse LU (false, to check it against).
+  void set_chain_contact_capacitance(bool on);
 
  private:
   // One linearised step (step() repeats it while it iterates wall friction).

@@ -155,10 +155,36 @@ struct OverdampedRodSolver::Workspace {
   // A chain with non-local drag: its blocks above plus the dense resistance,
   // solved through the Schur complement on the coupled translations.
   CoupledChainSolve coupled_chain;
+  // Chains with pair contacts off the band (chain_contact_solve.cpp): the
+  // band's links (spheres k, k+1 coupled), the contacts off it with their
+  // (i, j) and (j, i) blocks, the p spheres they couple (ascending; index of
+  // each sphere or -1), each one's chain segment [first, last], the coupled
+  // spheres in that segment ([begin, end) in coupled_spheres) and its
+  // columns T^-1 E_s there (6x6 per sphere of the segment), and the factors
+  // of I + G M. The matrix and right-hand side as assembled (band_*: the
+  // elimination overwrites them) for the backward-error check and the
+  // sparse fallback. Off (chain_contact_capacitance false): such a step
+  // goes to the general dense or sparse LU.
+  struct OffBandContact {
+    int i, j;
+    Matrix6d ij, ji;
+  };
+  bool chain_contact_capacitance = true;
+  std::vector<char> band_linked;
+  std::vector<OffBandContact> off_band;
+  std::vector<int> coupled_spheres, coupled_index, coupled_column_start;
+  std::vector<std::pair<int, int>> coupled_segment, coupled_in_segment;
+  std::vector<Matrix6d> coupled_columns;
+  std::vector<Matrix6d> band_diagonal, band_upper;
+  Eigen::VectorXd band_rhs, chain_contact_residual, row_sums, refinement;
+  Eigen::MatrixXd capacitance;  // I + G M, equilibrated: Dr (I + G M) Dc
+  Eigen::VectorXd capacitance_row_scale, capacitance_column_scale;  // Dr, Dc (powers of two)
+  Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_lu;
+  mutable Eigen::VectorXd coupled_work, coupled_load;  // y and M y of a solve
 
   // The factorisation of the last step, for newton_correction: which one
   // is kept, and the last step's solution dy and dt.
-  enum class Kept { none, banded, coupled_chain, dense, sparse };
+  enum class Kept { none, banded, coupled_chain, chain_contacts, dense, sparse };
   Kept kept = Kept::none;
   Eigen::VectorXd last_dy;
   double last_dt = 0.0;
@@ -210,6 +236,13 @@ struct OverdampedRodSolver::Workspace {
   const Eigen::VectorXd& solve(const OverdampedRod& rod, const RodDrag& drag, double dt, bool fused,
                                bool eliminate_in_pass);
   const Eigen::VectorXd& solve_chain(const RodDrag& drag, double dt, int n);
+  const Eigen::VectorXd& solve_chain_with_contacts(double dt, int n);
+  void add_pair_contact_blocks(double dt, int n);
+  bool factorise_capacitance(int n);
+  void equilibrate_capacitance();
+  void apply_off_band_correction(Eigen::VectorXd& x) const;
+  double chain_contact_backward_error(const Eigen::VectorXd& x);
+  const Eigen::VectorXd& solve_chain_contacts_sparse(int n);
   const Eigen::VectorXd& solve_in_groups(const OverdampedRod& rod, const RodDrag& drag, double dt);
   const Eigen::VectorXd& solve_dense(const OverdampedRod& rod, const RodDrag& drag, double dt);
   const Eigen::VectorXd& solve_sparse(const OverdampedRod& rod, const RodDrag& drag, double dt);

@@ -34,6 +34,8 @@ void accumulate(OverdampedSolverStatistics& a, const OverdampedSolverStatistics&
   a.banded_steps += b.banded_steps;
   a.sparse_steps += b.sparse_steps;
   a.dense_steps += b.dense_steps;
+  a.capacitance_steps += b.capacitance_steps;
+  a.capacitance_fallbacks += b.capacitance_fallbacks;
 }
 
 OverdampedSolverStatistics difference(const OverdampedSolverStatistics& a, const OverdampedSolverStatistics& b) {
@@ -46,6 +48,8 @@ OverdampedSolverStatistics difference(const OverdampedSolverStatistics& a, const
   d.banded_steps = a.banded_steps - b.banded_steps;
   d.sparse_steps = a.sparse_steps - b.sparse_steps;
   d.dense_steps = a.dense_steps - b.dense_steps;
+  d.capacitance_steps = a.capacitance_steps - b.capacitance_steps;
+  d.capacitance_fallbacks = a.capacitance_fallbacks - b.capacitance_fallbacks;
   return d;
 }
 

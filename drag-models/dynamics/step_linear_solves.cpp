@@ -126,6 +126,7 @@ const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve(const OverdampedRod
 // complement on the coupled translations (dynamics/coupled_chain_solve.h).
 const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain(const RodDrag& drag, double dt, int n) {
   for (const SphereWallContact& c : wall_contacts) add_wall_contact_block(c, dt, diagonal[c.sphere]);
+  if (!pair_contacts.empty()) return solve_chain_with_contacts(dt, n);  // local drag (fused)
   if (drag.coupled()) {
     coupled_chain.factorise(diagonal, upper, lower, drag.coupled_resistance, dt,
                             CoupledChainSolve::coupled_components(drag.coupled_resistance));
@@ -221,6 +222,10 @@ bool OverdampedRodSolver::Workspace::solve_kept(Eigen::VectorXd& b) const {
   switch (kept) {
     case Kept::banded: resolve_banded(b); return true;
     case Kept::coupled_chain: coupled_chain.solve_in_place(b); return true;
+    case Kept::chain_contacts:
+      resolve_banded(b);
+      apply_off_band_correction(b);
+      return true;
     case Kept::dense: dense_lu.solve_in_place(b); return true;
     case Kept::sparse: b = lu.solve(b).eval(); return true;
     case Kept::none: return false;

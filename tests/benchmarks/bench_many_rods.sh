@@ -16,7 +16,11 @@
 #              RANKS_MODEL (level of the 1 vs 2 ranks run, default local),
 #              STEPS (default 100), REPEATS (default 3), HSROD_BUILD (build/),
 #              PORE_RODS (default: none, skip), PORE_UPSTREAM (default 1800e-6 m),
-#              PORE_TMAX (default 0.1 s: the run stops there if rods are left).
+#              PORE_TMAX (default 0.1 s: the run stops there if rods are left),
+#              PORE_COMPARE (set: the pore scene REPEATS times with each of fix
+#              rod/implicit's contact_solve capacitance and lu, interleaved:
+#              median loop time of each, their ratio, and the largest
+#              difference of the final sphere positions between the two).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 build="${HSROD_BUILD:-$root/build}"
@@ -59,7 +63,7 @@ a, b = (np.loadtxt(f"final{r}.txt", skiprows=9) for r in (1, 2))
 print(f"1 vs 2 ranks, 100 rods, {len(a)} spheres: largest position difference {np.abs(a[:, 1:] - b[:, 1:]).max() / 3e-6:.2e} d")
 PY
 # Many rods through the pore scene: wall time beside the outcome counts.
-if [ -n "${PORE_RODS:-}" ]; then
+if [ -n "${PORE_RODS:-}" ] && [ -z "${PORE_COMPARE:-}" ]; then
   start=$(date +%s.%N)
   out=$("$build/hsrod" -in "$root/tests/benchmarks/scripts/in.pore_many_rods" -var nrods "$PORE_RODS" \
         -var upstream "${PORE_UPSTREAM:-1800e-6}" -var t_max "${PORE_TMAX:-0.1}" -log none -echo none)
@@ -68,4 +72,32 @@ if [ -n "${PORE_RODS:-}" ]; then
   printf "pore scene, %s rods, level 2, 1 core: wall %s s (loop %s), load %s\n" "$PORE_RODS" "$wall" "$loop" \
     "$(cut -d' ' -f1 /proc/loadavg)"
   printf "%s\n" "$out" | grep '^PORE'
+fi
+# The pore scene's contact clusters by the capacitance solve and by the
+# general LU: time beside the trajectories' difference.
+if [ -n "${PORE_RODS:-}" ] && [ -n "${PORE_COMPARE:-}" ]; then
+  declare -A loops
+  for solve in capacitance lu; do
+    cp "$root/tests/benchmarks/scripts/in.pore_many_rods" "pore_$solve.in"
+    echo "write_dump all custom pore_final_$solve.txt id x y z modify sort id format \"%d %.17g %.17g %.17g\"" >> "pore_$solve.in"
+  done
+  for _ in $(seq "$repeats"); do
+    for solve in capacitance lu; do
+      t=$("$build/hsrod" -in "pore_$solve.in" -var nrods "$PORE_RODS" -var upstream "${PORE_UPSTREAM:-1800e-6}" \
+          -var t_max "${PORE_TMAX:-0.1}" -var contact_solve "$solve" -log none -echo none |
+          awk '/^Loop time of/ {t += $4; s += $9} END {printf "%.2f", t}')
+      loops[$solve]="${loops[$solve]:-} $t"
+    done
+  done
+  median() { printf "%s\n" $1 | sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
+  mc=$(median "${loops[capacitance]}"); ml=$(median "${loops[lu]}")
+  diff=$(/usr/bin/python3 - <<'PY'
+import numpy as np
+a, b = (np.loadtxt(f"pore_final_{s}.txt", skiprows=9) for s in ("capacitance", "lu"))
+print(f"{np.abs(a[:, 1:] - b[:, 1:]).max() / 3e-6:.2e} d")
+PY
+)
+  printf "pore scene, %s rods, t_max %s: loop capacitance %s s (runs:%s), lu %s s (runs:%s), lu / capacitance %s; largest final position difference %s; load %s\n" \
+    "$PORE_RODS" "${PORE_TMAX:-0.1}" "$mc" "${loops[capacitance]}" "$ml" "${loops[lu]}" \
+    "$(awk -v a="$ml" -v b="$mc" 'BEGIN {printf "%.2f", a / b}')" "$diff" "$(cut -d' ' -f1 /proc/loadavg)"
 fi

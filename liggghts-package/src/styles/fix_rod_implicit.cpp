@@ -70,6 +70,7 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
       rod_contact_(false),
       rod_friction_(-1.0),
       rod_interaction_(true),
+      contact_capacitance_(false),
       rod_contacts_(0),
       rod_contact_force_(0.0),
       reported_(false),

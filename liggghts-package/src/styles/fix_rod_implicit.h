@@ -158,6 +158,7 @@ class FixRodImplicit : public Fix, public PartnerIntegrator, public RodRemovalLi
   double obstruction_change_since(const std::map<int, hsrod::RodObstructionForces> &before) const;
   void parse_rod_interaction(int narg, char **arg, int &iarg);
   void report_unconverged_sweeps(double change);
+  bool contact_capacitance_;      // contact_solve capacitance: chains with off-band contacts by Woodbury, else the general LU
   int rod_contacts_;              // last step, rods touching another rod
   double rod_contact_force_;      // last step, sum of |rod-rod Hertz force| [N]
   std::map<std::vector<int>, hsrod::OverdampedRodSolver> solvers_by_cluster_;  // rods stepped together, by molecule IDs

@@ -136,6 +136,7 @@ bool FixRodImplicit::step_cluster(const RodGather &gather, const std::vector<int
   // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
   const hsrod::ChannelGeometry *scene_walls = walls_ ? &hydro.geometry() : nullptr;
   hsrod::OverdampedRodSolver &solver = joint ? solvers_by_cluster_[molecules] : work_by_rod_[first].solver;
+  solver.set_chain_contact_capacitance(contact_capacitance_);
   hsrod::OverdampedStepResult &result = step.result;
   if (guard_) {
     // Accuracy guard: substeps (drag re-evaluated at each) or a refusal.

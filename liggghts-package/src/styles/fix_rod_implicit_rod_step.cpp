@@ -86,6 +86,7 @@ bool FixRodImplicit::step_rod_alone(int molecule, const std::vector<GatheredSphe
   // Self-contact (a folding rod) is always on; scene walls with `walls yes`.
   const hsrod::ChannelGeometry *scene_walls = walls_ ? &hydro.geometry() : nullptr;
   hsrod::OverdampedRodSolver &solver = work.solver;
+  solver.set_chain_contact_capacitance(contact_capacitance_);
   const hsrod::OverdampedStepResult &result = guard_ ? scratch.report.result : scratch.result;
   if (guard_) {
     // Accuracy guard: substeps (drag re-evaluated at each) or a refusal.

@@ -169,7 +169,7 @@ double CrossRodFarField::add_disturbance(const RodGeometry& target, const std::v
   for (const auto& p : target.positions) target_radius = std::max(target_radius, std::hypot(p.x() - cx, p.y() - cy));
   // sum_k f_k / (z - z_k)^2 per target sphere and channel, and its truncation bound
   std::vector<Cx> sum(2 * n, Cx{0.0, 0.0});
-  std::vector<double> bound(2 * n, 0.0);
+  double bound[2] = {0.0, 0.0};  // per channel, the same for every target sphere
   const std::size_t stride = 2 * (kOrder + 1);
   std::vector<int> stack{0};
   while (!stack.empty()) {
@@ -179,13 +179,13 @@ double CrossRodFarField::add_disturbance(const RodGeometry& target, const std::v
     const double gap = box_gap(tx0, tx1, ty0, ty1, box.x_min, box.x_max, box.y_min, box.y_max);
     const double distance = std::hypot(cx - box.cx, cy - box.cy) - target_radius;
     if (gap > reach_ && distance > 0.0 && box.radius <= kOpening * distance) {
+      // every target sphere is >= `distance` from the centre: q <= radius / distance there
+      const double tail = truncation_factor(box.radius / distance) / (distance * distance);
+      for (int c = 0; c < 2; ++c) bound[c] += box.force_sum[c] * tail;
       for (int i = 0; i < n; ++i) {
         const Cx z{target.positions[i].x() - box.cx, target.positions[i].y() - box.cy};
         const Cx inv = inverse(z);
-        const double inv2 = inv.re * inv.re + inv.im * inv.im;  // |z - z_c|^-2
         const Cx w = mul(Cx{box.radius, 0.0}, inv);
-        const double q = box.radius * std::sqrt(inv2);
-        const double tail = truncation_factor(q) * inv2;
         for (int c = 0; c < 2; ++c) {
           const double* a = &terms_[(static_cast<std::size_t>(index) * 2 + c) * stride];
           Cx acc{a[2 * kOrder], a[2 * kOrder + 1]};
@@ -197,7 +197,6 @@ double CrossRodFarField::add_disturbance(const RodGeometry& target, const std::v
           const Cx s = mul(acc, mul(inv, inv));
           sum[2 * i + c].re += s.re;
           sum[2 * i + c].im += s.im;
-          bound[2 * i + c] += box.force_sum[c] * tail;
         }
       }
     } else if (box.left >= 0) {
@@ -223,15 +222,13 @@ double CrossRodFarField::add_disturbance(const RodGeometry& target, const std::v
   }
   // conj(u) = K sum: u = (K re, -K im).
   const double K = dipole_strength_;
-  double largest = 0.0;
   for (int i = 0; i < n; ++i) {
     target_forces.driving_disturbance(2 * i) += K * sum[2 * i].re;
     target_forces.driving_disturbance(2 * i + 1) -= K * sum[2 * i].im;
     target_forces.velocity_disturbance(2 * i) += K * sum[2 * i + 1].re;
     target_forces.velocity_disturbance(2 * i + 1) -= K * sum[2 * i + 1].im;
-    largest = std::max({largest, K * bound[2 * i], K * bound[2 * i + 1]});
   }
-  return largest;
+  return K * std::max(bound[0], bound[1]);
 }
 
 }  // namespace hsrod

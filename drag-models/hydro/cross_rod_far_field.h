@@ -63,9 +63,11 @@ class CrossRodFarField {
 
   // q^D, q^v of `target` += the far field of every rod whose id is not in
   // `excluded` (ascending: the rods within r_c of the target, coupled
-  // exactly, and those of its own unit). Returns the bound of the
-  // expansion's truncation [m/s]: the largest over the target's spheres and
-  // the two channels of sum over boxes of K sum|f| |z - z_c|^-2 T_P(q).
+  // exactly, and those of its own unit; the target's own id among them).
+  // Returns the bound of the expansion's truncation at every target sphere
+  // [m/s]: the larger over the two channels of the sum over the boxes taken
+  // whole of K sum|f| D^-2 T_P(rho / D), D the box centre's distance from
+  // the target rod's centroid less the rod's radius (<= |z - z_c|).
   double add_disturbance(const RodGeometry& target, const std::vector<int>& excluded,
                          RodObstructionForces& target_forces) const;
 

@@ -12,7 +12,8 @@
 # Usage: tests/benchmarks/bench_many_rods.sh [work-dir]   (after scripts/build.sh)
 # Environment: COUNTS (default "10 100 1000"), MODELS (default "local"),
 #              COUPLING (fix rod/implicit rod_interaction: yes = one joint solve,
-#              lagged, or iterated with SWEEPS > 0 sweeps to SWEEP_TOLERANCE),
+#              lagged, or iterated with SWEEPS > 0 sweeps to SWEEP_TOLERANCE;
+#              FAR_FIELD yes|no: rod_far_field of the rods apart, default yes),
 #              RANKS_MODEL (level of the 1 vs 2 ranks run, default local),
 #              STEPS (default 100), REPEATS (default 3), HSROD_BUILD (build/),
 #              PORE_RODS (default: none, skip), PORE_UPSTREAM (default 1800e-6 m),
@@ -30,9 +31,10 @@ counts="${COUNTS:-10 100 1000}"
 models="${MODELS:-local}"
 steps="${STEPS:-100}"
 repeats="${REPEATS:-3}"
-coupling=(-var coupling "${COUPLING:-yes}" -var sweeps "${SWEEPS:-0}" -var sweep_tolerance "${SWEEP_TOLERANCE:-1e-6}")
+coupling=(-var coupling "${COUPLING:-yes}" -var sweeps "${SWEEPS:-0}" -var sweep_tolerance "${SWEEP_TOLERANCE:-1e-6}"
+          -var far_field "${FAR_FIELD:-yes}")
 cd "$work"
-echo "== many rods: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), $(git -C "$root" rev-parse --short HEAD), $steps steps, rod_interaction ${COUPLING:-yes} (sweeps ${SWEEPS:-0})"
+echo "== many rods: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), $(git -C "$root" rev-parse --short HEAD), $steps steps, rod_interaction ${COUPLING:-yes} (sweeps ${SWEEPS:-0}, rod_far_field ${FAR_FIELD:-yes})"
 printf "%-8s %7s %12s %14s %16s %8s\n" model rods "loop [s]" "per rod-step" "vs 100 rods" "load"
 for model in $models; do
   ref=""

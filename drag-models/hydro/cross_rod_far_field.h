@@ -36,6 +36,9 @@
 // and the tail of the 3-D near-field blend (near_field_coupling.h),
 // exponential in r over ~0.6 H, 1.6e-3 of the pair coupling at r_c and
 // 2e-5 at 1.5 r_c (beta = 0.15) (test_cross_rod_far_field.cpp measures both).
+// The dipoles of a suspension largely cancel over the angles, the blend's
+// 3-D tail does not: what it leaves is 0.4-0.7 % of the far field's effect on
+// the rods' motion (tests/benchmarks/RESULTS.md).
 #pragma once
 
 #include "hydro/cross_rod_disturbance.h"

@@ -305,9 +305,11 @@ TEST(SeveralRods, RodsApartBeyondTheReachFollowTheJointStepWithTheFarField) {
   // apart they are coupled by the far field (hydro/cross_rod_far_field.h),
   // whose pairs differ from the joint solve's by the near-field blend's
   // tail, <= 1.6e-3 of a pair's coupling at the reach and falling
-  // exponentially beyond (CrossRodFarField.*): iterated, the centres agree
-  // with the joint run to about that fraction of what the far pairs move
-  // them, which is what the run without the far field misses.
+  // exponentially beyond (CrossRodFarField.*), which adds up where the
+  // dipoles cancel: iterated, the centres agree with the joint run to a
+  // fraction of a per cent of what the far pairs move them (measured
+  // 3e-3; 0.4-0.7 % in the 30-rod suspension, tests/benchmarks/RESULTS.md),
+  // which is what the run without the far field misses.
   std::vector<Eigen::Vector3d> start;
   const auto joint = rods_in_a_row_run("yes", &start);
   const auto far = rods_in_a_row_run("iterated 200 1e-9", nullptr);
@@ -330,7 +332,7 @@ TEST(SeveralRods, RodsApartBeyondTheReachFollowTheJointStepWithTheFarField) {
               motion / kD, far_off / motion, near_off / motion, lagged_off / motion, lagged_near_off / motion,
               none_off / motion);
   EXPECT_GT(near_off, 1e-2 * none_off);  // the pairs beyond the reach matter here
-  EXPECT_LT(far_off, 1e-2 * near_off);   // the far field carries them (to the blend's tail, ~1e-3)
+  EXPECT_LT(far_off, 1e-2 * near_off);   // the far field carries them (to the blend's tail)
   EXPECT_LT(lagged_off, lagged_near_off);
 }
 

@@ -1,5 +1,6 @@
 #include "hydro/cross_rod_disturbance.h"
 
+#include "hydro/cross_rod_far_field.h"
 #include "hydro/nonlocal_model.h"
 
 #include <algorithm>
@@ -88,6 +89,10 @@ void NonlocalRodModel::add_disturbance(const RodGeometry& target, RodObstruction
       target_forces.driving_disturbance.segment<2>(2 * i) += (own ? md : m) * source_forces.driving.segment<2>(2 * k);
     }
   }
+}
+
+void NonlocalRodModel::set_far_field_scene(CrossRodFarField& far_field) const {
+  far_field.set_scene(parameters_.viscosity, parameters_.gap_height, interaction_reach());
 }
 
 }  // namespace hsrod

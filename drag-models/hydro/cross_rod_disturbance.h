@@ -24,8 +24,9 @@
 // side by side within ~2.5 d, tests/drag-models/hydro/test_cross_rod_disturbance.cpp); lagged, q is taken from the previous step's
 // P, an explicit coupling whose error is of the order of the change of P
 // over one step times the coupling. Pairs of rods farther apart than the
-// model's interaction reach are dropped (their coupling is below
-// NonlocalRodModel::kInteractionTolerance of a sphere's own obstruction).
+// model's interaction reach (each coupling by less than
+// NonlocalRodModel::kInteractionTolerance of a sphere's own obstruction,
+// but many of them) are the far field's, hydro/cross_rod_far_field.h.
 #pragma once
 
 #include "hydro/hydrodynamic_model.h"

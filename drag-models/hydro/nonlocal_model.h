@@ -40,6 +40,7 @@ namespace hsrod {
 
 struct UnitObstruction;        // hydro/cross_rod_disturbance.h
 struct RodObstructionForces;   // hydro/cross_rod_disturbance.h
+class CrossRodFarField;        // hydro/cross_rod_far_field.h
 
 // What level 3 keeps between evaluations (ModelState; owned by the caller,
 // e.g. RodHydrodynamics): per rod, the in-plane coupling inverses solved at
@@ -126,6 +127,9 @@ class NonlocalRodModel : public LocalDragBase {
   // near field) that couple the spheres of one rod, for every sphere pair.
   void add_disturbance(const RodGeometry& target, RodObstructionForces& target_forces, const RodGeometry& source,
                        const RodObstructionForces& source_forces) const;
+  // The far field of the rods beyond interaction_reach() in this model's
+  // fluid and gap (hydro/cross_rod_far_field.h).
+  void set_far_field_scene(CrossRodFarField& far_field) const;
   // Beyond the screening length l = H / sqrt(12) the Green's function is
   // the Hele-Shaw potential dipole |G| = H / (24 pi mu r^2)
   // (brinkman_green.h), which decays only algebraically; the coupling of

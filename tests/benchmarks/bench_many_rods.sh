@@ -12,7 +12,8 @@
 # Usage: tests/benchmarks/bench_many_rods.sh [work-dir]   (after scripts/build.sh)
 # Environment: COUNTS (default "10 100 1000"), MODELS (default "local"),
 #              COUPLING (fix rod/implicit rod_interaction: yes = one joint solve,
-#              lagged, or iterated with SWEEPS > 0 sweeps to SWEEP_TOLERANCE),
+#              lagged, or iterated with SWEEPS > 0 sweeps to SWEEP_TOLERANCE;
+#              FAR_FIELD yes|no: rod_far_field of the rods apart, default yes),
 #              RANKS_MODEL (level of the 1 vs 2 ranks run, default local),
 #              STEPS (default 100), REPEATS (default 3), HSROD_BUILD (build/),
 #              PORE_RODS (default: none, skip), PORE_UPSTREAM (default 1800e-6 m),
@@ -20,7 +21,9 @@
 #              PORE_COMPARE (set: the pore scene REPEATS times with each of fix
 #              rod/implicit's contact_solve capacitance and lu, interleaved:
 #              median loop time of each, their ratio, and the largest
-#              difference of the final sphere positions between the two).
+#              difference of the final sphere positions between the two),
+#              FAR_FIELD_COMPARE (set: level 3 rods apart at each count with
+#              rod_far_field no and yes, interleaved: loop time and CPU time).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 build="${HSROD_BUILD:-$root/build}"
@@ -30,9 +33,10 @@ counts="${COUNTS:-10 100 1000}"
 models="${MODELS:-local}"
 steps="${STEPS:-100}"
 repeats="${REPEATS:-3}"
-coupling=(-var coupling "${COUPLING:-yes}" -var sweeps "${SWEEPS:-0}" -var sweep_tolerance "${SWEEP_TOLERANCE:-1e-6}")
+coupling=(-var coupling "${COUPLING:-yes}" -var sweeps "${SWEEPS:-0}" -var sweep_tolerance "${SWEEP_TOLERANCE:-1e-6}"
+          -var far_field "${FAR_FIELD:-yes}")
 cd "$work"
-echo "== many rods: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), $(git -C "$root" rev-parse --short HEAD), $steps steps, rod_interaction ${COUPLING:-yes} (sweeps ${SWEEPS:-0})"
+echo "== many rods: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), $(git -C "$root" rev-parse --short HEAD), $steps steps, rod_interaction ${COUPLING:-yes} (sweeps ${SWEEPS:-0}, rod_far_field ${FAR_FIELD:-yes})"
 printf "%-8s %7s %12s %14s %16s %8s\n" model rods "loop [s]" "per rod-step" "vs 100 rods" "load"
 for model in $models; do
   ref=""
@@ -100,4 +104,30 @@ PY
   printf "pore scene, %s rods, t_max %s: loop capacitance %s s (runs:%s), lu %s s (runs:%s), lu / capacitance %s; largest final position difference %s; load %s\n" \
     "$PORE_RODS" "${PORE_TMAX:-0.1}" "$mc" "${loops[capacitance]}" "$ml" "${loops[lu]}" \
     "$(awk -v a="$ml" -v b="$mc" 'BEGIN {printf "%.2f", a / b}')" "$diff" "$(cut -d' ' -f1 /proc/loadavg)"
+fi
+# With FAR_FIELD_COMPARE set: rods apart (COUPLING lagged or iterated) at
+# each count, REPEATS runs each of rod_far_field no and yes, interleaved:
+# median loop time and user CPU per rod-step of each (the CPU time is less
+# disturbed by a shared machine's load than the loop's wall time).
+if [ -n "${FAR_FIELD_COMPARE:-}" ]; then
+  median() { printf "%s\n" $1 | sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
+  for n in $counts; do
+    declare -A loop cpu
+    for _ in $(seq "$repeats"); do
+      for far in no yes; do
+        out=$( { /usr/bin/time -f "CPU %U" "$build/hsrod" -in "$script" -var nrods "$n" -var model nonlocal \
+                 -var steps "$steps" "${coupling[@]}" -var far_field "$far" -log none -echo none; } 2>&1)
+        loop[$far]="${loop[$far]:-} $(printf "%s\n" "$out" | awk '/^Loop time of/ {t = $4} END {print t}')"
+        cpu[$far]="${cpu[$far]:-} $(printf "%s\n" "$out" | awk '/^CPU/ {print $2}')"
+      done
+    done
+    printf "rods apart %s, %s rods, %s steps: rod_far_field no: loop %s s, CPU %s s (runs:%s); yes: loop %s s, CPU %s s (runs:%s); CPU per rod-step no %s ms, yes %s ms, yes / no %s; load %s\n" \
+      "${COUPLING:-yes}" "$n" "$steps" "$(median "${loop[no]}")" "$(median "${cpu[no]}")" "${cpu[no]}" \
+      "$(median "${loop[yes]}")" "$(median "${cpu[yes]}")" "${cpu[yes]}" \
+      "$(awk -v t="$(median "${cpu[no]}")" -v n="$n" -v s="$steps" 'BEGIN {printf "%.3g", 1e3 * t / (n * s)}')" \
+      "$(awk -v t="$(median "${cpu[yes]}")" -v n="$n" -v s="$steps" 'BEGIN {printf "%.3g", 1e3 * t / (n * s)}')" \
+      "$(awk -v a="$(median "${cpu[yes]}")" -v b="$(median "${cpu[no]}")" 'BEGIN {printf "%.3f", a / b}')" \
+      "$(cut -d' ' -f1 /proc/loadavg)"
+    unset loop cpu
+  done
 fi

@@ -5,7 +5,9 @@
 # (tests/benchmarks/scripts/in.many_rods, level 3): loop time beside the
 # largest and median difference of the final sphere positions from the
 # joint run's, in sphere diameters, and the same for no interaction
-# between rods (what the coupling is worth). One run each, one core.
+# between rods (what the coupling is worth); each rods-apart coupling with
+# the rods within the reach only (rod_far_field no) and with the far field
+# beyond it (yes). One run each, one core.
 # Usage: tests/benchmarks/bench_rods_apart.sh [work-dir]   (after scripts/build.sh)
 # Environment: NRODS (default 30), STEPS (default 20), HSROD_BUILD (build/).
 set -euo pipefail
@@ -30,13 +32,19 @@ run() {
 }
 run joint -var coupling yes
 run none -var coupling no
+# each rods-apart coupling without (_near: rods within the reach only) and
+# with the far field of the rods beyond it (rod_far_field yes), interleaved
+run lagged_near -var coupling lagged -var far_field no
 run lagged -var coupling lagged
+run iterated_1e-6_near -var sweeps 100 -var sweep_tolerance 1e-6 -var far_field no
 run iterated_1e-6 -var sweeps 100 -var sweep_tolerance 1e-6
+run iterated_1e-10_near -var sweeps 100 -var sweep_tolerance 1e-10 -var far_field no
 run iterated_1e-10 -var sweeps 100 -var sweep_tolerance 1e-10
 /usr/bin/python3 - <<'PY'
 import numpy as np
 ref = np.loadtxt("final_joint.txt", skiprows=9)
-for tag in ("none", "lagged", "iterated_1e-6", "iterated_1e-10"):
+for tag in ("none", "lagged_near", "lagged", "iterated_1e-6_near", "iterated_1e-6", "iterated_1e-10_near",
+            "iterated_1e-10"):
     a = np.loadtxt(f"final_{tag}.txt", skiprows=9)
     d = np.linalg.norm(a[:, 1:] - ref[:, 1:], axis=1) / 3e-6
     print(f"{tag:16s} vs joint: largest position difference {d.max():.2e} d, median {np.median(d):.2e} d")

@@ -216,10 +216,11 @@ void FixRodImplicit::setup(int) {
     char msg[400];
     std::snprintf(msg, sizeof(msg),
                   "fix rod/implicit: rod_interaction %s: rods within the drag model's interaction reach %g m are "
-                  "solved apart, each with the others' disturbance %s\n",
+                  "solved apart, each with the others' disturbance %s; rods farther apart %s\n",
                   rods_apart_ == RodsApart::lagged ? "lagged" : "iterated", drag_->hydrodynamics().interaction_reach(),
                   rods_apart_ == RodsApart::lagged ? "from their last obstruction forces (lagged)"
-                                                   : "iterated rod by rod to the tolerance (Gauss-Seidel)");
+                                                   : "iterated rod by rod to the tolerance (Gauss-Seidel)",
+                  far_field_ ? "by their far field (multipoles, rod_far_field yes)" : "uncoupled (rod_far_field no)");
     if (screen) fputs(msg, screen);
     if (logfile) fputs(msg, logfile);
   }

@@ -27,6 +27,7 @@ FixStyle(rod/implicit,FixRodImplicit)
 #include "dynamics/rod_cluster.h"
 #include "dynamics/step_cost_report.h"
 #include "hydro/cross_rod_disturbance.h"
+#include "hydro/cross_rod_far_field.h"
 
 #include <chrono>
 #include <map>
@@ -149,6 +150,11 @@ class FixRodImplicit : public Fix, public PartnerIntegrator, public RodRemovalLi
   std::unordered_map<int, std::vector<int>> apart_neighbours_;     // rods within the interaction reach
   std::map<int, hsrod::UnitObstruction> unit_by_first_;            // the step's units, by first rod
   long apart_sweeps_taken_ = 0;    // run total
+  // rod_far_field yes: the rods beyond the reach summed by their multipoles
+  // (hydro/cross_rod_far_field.h), from the obstruction forces at each sweep's start.
+  bool far_field_ = true;
+  hsrod::CrossRodFarField far_field_sum_;
+  void build_far_field();
   bool apart() const { return rods_apart_ != RodsApart::off; }
   void prepare_rods_apart(const RodGather &gather);
   // The group's load with the other units' disturbance (at the step's start: q found and kept).

@@ -4,7 +4,8 @@
    rods are clustered by contact reach only; each group is stepped alone
    with the disturbance of the other rods within the model's interaction
    reach imposed at its spheres (hydro/cross_rod_disturbance.h: why, and
-   what it converges to). This file gathers the rods' centres and
+   what it converges to), and with rod_far_field yes that of the rods
+   beyond the reach (hydro/cross_rod_far_field.h). This file gathers the rods' centres and
    neighbours (dynamics/rod_cluster.h: rods_within_reach, a cell list),
    hands each group its disturbance and keeps every rod's obstruction
    forces; the physics is in drag-models/hydro.
@@ -93,6 +94,22 @@ void FixRodImplicit::prepare_rods_apart(const RodGather &gather) {
   }
 }
 
+// The far field's tree over every rod at the step's start, with the
+// obstruction forces of the last sweep or step (the same on every rank: the
+// rods are gathered on all, by molecule ID).
+void FixRodImplicit::build_far_field() {
+  drag_->hydrodynamics().nonlocal_model()->set_far_field_scene(far_field_sum_);
+  std::vector<int> ids;
+  std::vector<const hsrod::RodGeometry *> rods;
+  std::vector<const hsrod::RodObstructionForces *> forces;
+  for (const auto &entry : obstruction_by_rod_) {
+    ids.push_back(entry.first);
+    rods.push_back(&apart_geometry_.at(entry.first));
+    forces.push_back(&entry.second);
+  }
+  far_field_sum_.build(ids, rods, forces);
+}
+
 void FixRodImplicit::apart_loads(const std::vector<int> &molecules, const std::vector<hsrod::RodGeometry> &geometries,
                                  hsrod::RodDrag &out, bool step_start) {
   hsrod::RodHydrodynamics &hydro = drag_->hydrodynamics();
@@ -113,6 +130,12 @@ void FixRodImplicit::apart_loads(const std::vector<int> &molecules, const std::v
           if (std::find(molecules.begin(), molecules.end(), other) == molecules.end())
             model.add_disturbance(apart_geometry_.at(molecule), forces, apart_geometry_.at(other),
                                   obstruction_by_rod_.at(other));
+      if (far_field_) {  // the rods beyond the reach: all but those just coupled exactly and the unit's own
+        std::vector<int> excluded = molecules;
+        if (near != apart_neighbours_.end()) excluded.insert(excluded.end(), near->second.begin(), near->second.end());
+        std::sort(excluded.begin(), excluded.end());
+        far_field_sum_.add_disturbance(apart_geometry_.at(molecule), excluded, forces);
+      }
       size += forces.driving.size();
     }
     kept.driving_disturbance.resize(size);

@@ -53,6 +53,8 @@ void FixRodImplicit::parse_keywords(int narg, char **arg) {
         error->all(FLERR, "fix rod/implicit: rod_friction must be in [0, 10] (Coulomb coefficient between rods)");
     } else if (strcmp(key, "rod_interaction") == 0) {
       parse_rod_interaction(narg, arg, iarg);
+    } else if (strcmp(key, "rod_far_field") == 0) {
+      far_field_ = parse_yes_no(error, "fix rod/implicit", key, val);
     } else if (strcmp(key, "contact_solve") == 0) {
       if (strcmp(val, "capacitance") != 0 && strcmp(val, "lu") != 0)
         error->all(FLERR, "fix rod/implicit: contact_solve expects capacitance or lu");
@@ -91,7 +93,7 @@ void FixRodImplicit::parse_keywords(int narg, char **arg) {
       char msg[704];
       std::snprintf(msg, sizeof(msg),
                     "Illegal fix rod/implicit command: unknown keyword '%s' (expected bonds, drag, walls, "
-                    "wall_friction, slip_velocity, friction_iterations, friction_tolerance, rod_contact, rod_friction, rod_interaction, contact_solve, max_displacement, "
+                    "wall_friction, slip_velocity, friction_iterations, friction_tolerance, rod_contact, rod_friction, rod_interaction, rod_far_field, contact_solve, max_displacement, "
                     "accuracy_guard, step_error, max_substeps, max_bond_strain, max_growth, adaptive, tolerance)", key);
       error->all(FLERR, msg);
     }

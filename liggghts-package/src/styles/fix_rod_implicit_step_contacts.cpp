@@ -178,6 +178,7 @@ std::vector<std::vector<int>> FixRodImplicit::step_all(const RodGather &gather,
   for (int sweep = 0; sweep < apart_sweeps_; ++sweep) {
     const std::map<int, hsrod::RodObstructionForces> before =
         rods_apart_ == RodsApart::iterated ? obstruction_by_rod_ : std::map<int, hsrod::RodObstructionForces>();
+    if (apart() && far_field_) build_far_field();
     pending_.clear();
     stepped_rods_.clear();
     joint_strain_ = joint_energy_ = 0.0;

@@ -20,6 +20,8 @@
 //   l4, l4_nf_off, l4_nf_friction_only, l4_nf_driving_only
 //   l4_cpd<C>[_rc<R>][_g<G>][_nf_off]  cells_per_diameter C, reflection_cells_per_diameter R
 //                                       (R = C: one scale), grading G
+//   l3_p<f|d><k><delta>, l4_p<f|d><k><delta>  one near-field parameter changed (make_variant), for
+//                                       the sensitivity of the loads to it
 // OUT.csv: variant,case,load,quantity,model with quantities fx_<i>, fy_<i>,
 // tz_<i> (forces over 3 pi mu d U, torques over 3 pi mu d^2 U, as
 // hsrod_crosscheck_scenes writes them) and film_<i> (the film friction
@@ -72,8 +74,25 @@ Variant make_variant(const std::string& name, const HydrodynamicParameters& p, c
   const bool off = name.find("_nf_off") != std::string::npos;
   const bool friction_only = name.find("_nf_friction_only") != std::string::npos;
   const bool driving_only = name.find("_nf_driving_only") != std::string::npos;
+  // _p<f|d><k><delta>: parameter k (0 blend_length x (1 + delta), 1 reflection + delta, 2 reflection_along
+  // + delta, 3 blend_length_along x (1 + delta)) of the friction (f) or driving (d) coupling changed
+  const auto at = name.find("_p");
+  auto perturbed = [&](NearFieldAtBeta c) {
+    if (at == std::string::npos) return c;
+    NearFieldCoupling& k = name[at + 2] == 'f' ? c.friction : c.driving;
+    if (k.blend_length_along == 0.0) k.blend_length_along = k.blend_length;
+    const double delta = std::stod(name.substr(at + 4));
+    switch (name[at + 3]) {
+      case '0': k.blend_length *= 1.0 + delta; break;
+      case '1': k.reflection += delta; break;
+      case '2': k.reflection_along += delta; break;
+      default: k.blend_length_along *= 1.0 + delta; break;
+    }
+    return c;
+  };
   auto coupling = [&](const NearFieldAtBeta& c) {
     if (off) return NearFieldAtBeta{};
+    if (at != std::string::npos) return perturbed(c);
     if (friction_only) return NearFieldAtBeta(c.friction, c.friction);
     if (driving_only) return NearFieldAtBeta(c.driving, c.driving);
     return c;
@@ -166,6 +185,14 @@ int main(int argc, char** argv) {
         out << head << "tz_" << i + 1 << ','
             << drag.torque(i, Eigen::Vector3d(0.0, 0.0, load.spins(i))).z() / (load.force_scale * c.d) << '\n';
         out << head << "film_" << i + 1 << ',' << v.film / (3.0 * M_PI * c.mu * c.d) << '\n';
+      }
+      if (name == "l4" || name == "l3") {
+        const NearFieldAtBeta k = name == "l3" ? NearFieldCalibration::built_in().nonlocal.at(c.beta)
+                                               : NearFieldCalibration::built_in().twoway.at(c.beta);
+        std::printf("%s near field at beta %g: friction kappa %g alpha %g alpha_e %g kappa_e %g; driving kappa %g "
+                    "alpha %g alpha_e %g kappa_e %g\n", name.c_str(), c.beta, k.friction.blend_length,
+                    k.friction.reflection, k.friction.reflection_along, k.friction.along(), k.driving.blend_length,
+                    k.driving.reflection, k.driving.reflection_along, k.driving.along());
       }
     }
     std::printf("%s done\n", name.c_str());

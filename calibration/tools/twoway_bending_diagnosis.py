@@ -22,7 +22,11 @@ Prints four tables (forces over 3 pi mu d U, moments over 3 pi mu d^2 U):
      + b, each variant's distance from it, and the resolved rod's; then the
      same with every variant's film friction shielded along the rod like its
      obstruction friction (zeta_f S_i / zeta_o in place of zeta_f, S_i the
-     sphere's coupled obstruction friction, zeta_o a lone sphere's).
+     sphere's coupled obstruction friction, zeta_o a lone sphere's);
+  6. the q profile of the straight 15-sphere row with that film and the held
+     load's reflection alpha raised by 0.08 (by hand, not a fit: whether a
+     level of that form can have the resolved profile at the resolved
+     lambda_perp).
 The levels come from hsrod_twoway_load_parts; Python 3 standard library
 (matplotlib for --plot)."""
 import argparse
@@ -204,6 +208,17 @@ def main(argv=None):
                 print("\nfilm friction shielded like the obstruction friction:")
             for n in (10, 15):
                 lines[(n, shielded)] = bending_line(a.parts, work, n, line_vars, rows, shielded, lone_obstruction)
+        # 6. the shielded film with the held load's alpha raised
+        m = run_parts(a.parts, work, [FIG3, "--case", STRAIGHT], ["l4_pd10.08"])
+        st = split_states(m, "l4_pd10.08", x_of[STRAIGHT])
+        film = m[("l4_pd10.08", "friction")]["film_1"]
+        fric = [(f - film) * (1.0 + film / lone_obstruction) for f in st["fric_y"]]
+        lam = sum(st["held_y"]) / sum(fric)
+        q = [h - lam * f for h, f in zip(st["held_y"], fric)]
+        print("\n6. level 4, film scaled like the obstruction, held alpha + 0.08: lambda_perp %.4f, R_perp %.1f, B %+.3f"
+              % (lam, sum(fric), forces_B([p[0] for p in x_of[STRAIGHT]], st["held_y"], fric)))
+        print("q_y, spheres 1-8:  " + " ".join("%+.3f" % v for v in q[:8]))
+        print("resolved:          " + " ".join("%+.3f" % v for v in r["q_y"][:8]))
     if a.plot:
         plot(a.plot, r, straight, along, bars, {n: lines[(n, False)] for n in (10, 15)})
 

@@ -26,7 +26,8 @@ Prints four tables (forces over 3 pi mu d U, moments over 3 pi mu d^2 U):
   6. the q profile of the straight 15-sphere row with that film and the held
      load's reflection alpha raised by 0.08 (by hand, not a fit: whether a
      level of that form can have the resolved profile at the resolved
-     lambda_perp).
+     lambda_perp), and the same construction on the Fig. 3 arcs (R_perp,
+     lambda_perp, B, tau from the 45-degree split).
 The levels come from hsrod_twoway_load_parts; Python 3 standard library
 (matplotlib for --plot)."""
 import argparse
@@ -219,8 +220,29 @@ def main(argv=None):
               % (lam, sum(fric), forces_B([p[0] for p in x_of[STRAIGHT]], st["held_y"], fric)))
         print("q_y, spheres 1-8:  " + " ".join("%+.3f" % v for v in q[:8]))
         print("resolved:          " + " ".join("%+.3f" % v for v in r["q_y"][:8]))
+        print("| bend | resolved R_perp, lambda_perp, B, tau | level 4 with that film and held alpha + 0.08 |")
+        print("| ---: | --- | --- |")
+        for c in BENT:
+            m = run_parts(a.parts, work, [FIG3, "--case", c], ["l4_pd10.08"])
+            st = scaled_film_states(m, "l4_pd10.08", x_of[c], lone_obstruction)
+            rc = res[c][max(res[c])]
+            print("| %g | %.1f, %.4f, %+.3f, %+.2f | %.1f, %.4f, %+.3f, %+.2f |" % (
+                rc["bend"], rc["R_perp"], rc["lam_perp"], rc["B"], rc["tau"], st["R_perp"], st["lam_perp"], st["B"],
+                st["tau"]))
     if a.plot:
         plot(a.plot, r, straight, along, bars, {n: lines[(n, False)] for n in (10, 15)})
+
+
+def scaled_film_states(m, variant, x, lone_obstruction):
+    """fig3_bent.states of a variant whose friction has its film scaled like its obstruction part: each sphere's
+    45-degree friction F_i = zeta_f e + S_i becomes S_i (1 + zeta_f / zeta_o)."""
+    n = len(x)
+    f, h = m[(variant, "friction")], m[(variant, "driving")]
+    film, e = f["film_1"], 0.5 ** 0.5
+    F = [((f["fx_%d" % (i + 1)] - film * e) * (1.0 + film / lone_obstruction),
+          (f["fy_%d" % (i + 1)] - film * e) * (1.0 + film / lone_obstruction)) for i in range(n)]
+    H = [(h["fx_%d" % (i + 1)], h["fy_%d" % (i + 1)]) for i in range(n)]
+    return fig3_bent.states(x, F, H, [f["tz_%d" % (i + 1)] for i in range(n)], [h["tz_%d" % (i + 1)] for i in range(n)])
 
 
 def bending_line(tool, work, n, variants, rows, shielded, lone_obstruction):

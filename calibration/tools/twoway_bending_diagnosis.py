@@ -209,6 +209,13 @@ def main(argv=None):
                 print("\nfilm friction shielded like the obstruction friction:")
             for n in (10, 15):
                 lines[(n, shielded)] = bending_line(a.parts, work, n, line_vars, rows, shielded, lone_obstruction)
+        print("\nthe arcs of 60 and 100 deg (B from the 45-degree split, with the sphere torques):")
+        for c in BENT[2:]:
+            ml = run_parts(a.parts, work, [FIG3, "--case", c], line_vars)
+            pts = [(v, split_states(ml, v, x_of[c])) for v in line_vars]
+            pts = [(v, st["lam_perp"], st["B"]) for v, st in pts]
+            rc = res[c][max(res[c])]
+            print_line("%g deg" % rc["bend"], pts, rc["lam_perp"], rc["B"])
         # 6. the shielded film with the held load's alpha raised
         m = run_parts(a.parts, work, [FIG3, "--case", STRAIGHT], ["l4_pd10.08"])
         st = split_states(m, "l4_pd10.08", x_of[STRAIGHT])
@@ -259,16 +266,22 @@ def bending_line(tool, work, n, variants, rows, shielded, lone_obstruction):
             fric = [(f - film) * (1.0 + film / lone_obstruction) for f in fric]
         lam = sum(st["held_y"]) / sum(fric)
         pts.append((v, lam, forces_B([p[0] for p in xs], st["held_y"], fric)))
+    lam_res = resolved_lambda_perp(n)
+    b_res = rows[(0.83, n)][-1][1]
+    slope, icpt = print_line(str(n), pts, lam_res, b_res)
+    return pts, slope, icpt, lam_res, b_res
+
+
+def print_line(label, pts, lam_res, b_res):
+    """Least-squares line B = a lambda_perp + b through the variants (name, lambda_perp, B), as a table row."""
     k = len(pts)
     sx, sy = sum(p[1] for p in pts), sum(p[2] for p in pts)
     slope = (k * sum(p[1] * p[2] for p in pts) - sx * sy) / (k * sum(p[1] ** 2 for p in pts) - sx * sx)
     icpt = (sy - slope * sx) / k
-    lam_res = resolved_lambda_perp(n)
-    b_res = rows[(0.83, n)][-1][1]
     far = max(abs(p[2] - slope * p[1] - icpt) for p in pts)
-    print("| %d | %.2f lambda_perp %+.2f | %.3f | %.4f, %+.3f | %+.3f |" % (
-        n, slope, icpt, far, lam_res, b_res, b_res - slope * lam_res - icpt))
-    return pts, slope, icpt, lam_res, b_res
+    print("| %s | %.2f lambda_perp %+.2f | %.3f | %.4f, %+.3f | %+.3f |" % (
+        label, slope, icpt, far, lam_res, b_res, b_res - slope * lam_res - icpt))
+    return slope, icpt
 
 
 def plot(path, r, straight, along, bars, lines):

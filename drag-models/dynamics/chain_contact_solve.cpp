@@ -46,10 +46,12 @@ constexpr double backward_error_ceiling = 1e-14;
 // Coupled spheres beyond which I + G M is factorised sparsely: the dense
 // LU's (6p)^3 / 3 multiply-adds grow past the sparse LU's, whose cost
 // follows the contact graph (a few partners per sphere, G coupling only the
-// spheres of one rod); in the 100-rod pore scene (in.pore_many_rods,
-// upstream 0) p stayed <= 10 over 600 steps, in a clogging plug it is
-// several hundred.
-constexpr int dense_capacitance_spheres = 40;
+// spheres of one rod). On the clusters of test_chain_contact_solve.cpp the
+// dense LU's step was 2x faster at p = 18-24, even at p = 40 and 2x slower
+// at p = 64, 10-30x slower at p = 160-320. In the 100-rod pore scene
+// (in.pore_many_rods, upstream 0) p stayed <= 10 over 600 steps; in a
+// clogging plug it is several hundred.
+constexpr int dense_capacitance_spheres = 32;
 
 // 2^-round(log2 largest): the power of two that scales `largest` to ~1 (1 for 0).
 double power_of_two_scale(double largest) { return largest > 0.0 ? std::exp2(-std::round(std::log2(largest))) : 1.0; }

@@ -22,7 +22,8 @@
 // estimate exceeds 1 / capacitance_rcond_floor, a componentwise backward
 // error above backward_error_ceiling after one step of iterative refinement
 // (Woodbury's solve is not backward stable in general: Yip, SIAM J. Sci.
-// Stat. Comput. 7 (1986) 507).
+// Stat. Comput. 7 (1986) 507), or where most of the chain's spheres are
+// coupled (max_coupled_fraction), where the sparse LU of A is cheaper.
 #include "dynamics/overdamped_rod_step_internal.h"
 
 #include <algorithm>
@@ -52,6 +53,13 @@ constexpr double backward_error_ceiling = 1e-14;
 // (in.pore_many_rods, upstream 0) p stayed <= 10 over 600 steps; in a
 // clogging plug it is several hundred.
 constexpr int dense_capacitance_spheres = 32;
+// Beyond that, the fraction of the chain's spheres coupled above which the
+// sparse LU of the whole matrix is used instead: I + G M is then nearly as
+// large as A and several times denser (a column per partner's rod, not per
+// bond). Measured on test_chain_contact_solve.cpp's clusters (one step):
+// with 10-50 % coupled the capacitance solve was 1.1-7.7x faster (n = 80 -
+// 1600, p = 36-156), with 70-100 % coupled 1.4-1.7x slower (n = 160-320).
+constexpr double max_coupled_fraction = 0.5;
 
 // 2^-round(log2 largest): the power of two that scales `largest` to ~1 (1 for 0).
 double power_of_two_scale(double largest) { return largest > 0.0 ? std::exp2(-std::round(std::log2(largest))) : 1.0; }
@@ -131,6 +139,8 @@ const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain_with_contacts
   band_diagonal.assign(diagonal.begin(), diagonal.begin() + n);
   band_upper.assign(upper.begin(), upper.begin() + n);
   band_rhs = rhs;
+  const int p = static_cast<int>(coupled_spheres.size());
+  if (p > dense_capacitance_spheres && p > max_coupled_fraction * n) return solve_chain_contacts_sparse(n);
   if (!factorise_capacitance(n)) return solve_chain_contacts_sparse(n);
   apply_off_band_correction(rhs);
   // One step of iterative refinement where the backward error is above

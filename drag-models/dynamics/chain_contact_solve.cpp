@@ -11,8 +11,10 @@
 // written without M^-1 (a contact block has no inverse). T^-1 E is cheap: T
 // is block diagonal over the chain segments (a rod's spheres), so the
 // column of sphere s fills only its own segment. Cost per step: one band
-// elimination, 6 columns per coupled sphere over its segment, and a dense
-// LU of 6p x 6p, against a sparse LU whose fill spans the cluster.
+// elimination, 6 columns per coupled sphere over its segment, and an LU of
+// 6p x 6p (dense for a few coupled spheres, sparse beyond: I + G M couples
+// sphere t to b only where a sphere of t's rod touches b), against a sparse
+// LU of the whole cluster whose fill spans it.
 //
 // When the result cannot be trusted the same matrix goes to the sparse LU
 // instead (solve_chain_contacts_sparse): a non-finite band pivot (T
@@ -20,8 +22,8 @@
 // estimate exceeds 1 / capacitance_rcond_floor, a componentwise backward
 // error above backward_error_ceiling after one step of iterative refinement
 // (Woodbury's solve is not backward stable in general: Yip, SIAM J. Sci.
-// Stat. Comput. 7 (1986) 507), or more than max_capacitance_spheres
-// coupled spheres, where the dense LU's (6p)^3 outgrows the sparse LU.
+// Stat. Comput. 7 (1986) 507), or where most of the chain's spheres are
+// coupled (max_coupled_fraction), where the sparse LU of A is cheaper.
 #include "dynamics/overdamped_rod_step_internal.h"
 
 #include <algorithm>
@@ -42,11 +44,44 @@ constexpr double capacitance_rcond_floor = 1e-12;
 // 9.3); Woodbury's first solve is at 4e-14 - 2e-12 in the clusters of
 // test_chain_contact_solve.cpp, one refinement brings it to ~2e-16.
 constexpr double backward_error_ceiling = 1e-14;
-// Coupled spheres beyond which the dense 6p x 6p LU is not used: a bound on
-// its cost ((6p)^3 / 3 multiply-adds, 2.4e8 at p = 150, ~0.1 s), not a
-// measured crossover with the sparse LU; in the 100-rod pore scene
-// (in.pore_many_rods, upstream 0) p stayed <= 10 over 600 steps.
-constexpr int max_capacitance_spheres = 150;
+// Coupled spheres beyond which I + G M is factorised sparsely: the dense
+// LU's (6p)^3 / 3 multiply-adds grow past the sparse LU's, whose cost
+// follows the contact graph (a few partners per sphere, G coupling only the
+// spheres of one rod). On the clusters of test_chain_contact_solve.cpp the
+// dense LU's step was 2x faster at p = 18-24, even at p = 40 and 2x slower
+// at p = 64, 10-30x slower at p = 160-320. In the 100-rod pore scene
+// (in.pore_many_rods, upstream 0) p stayed <= 10 over 600 steps; in a
+// clogging plug it is several hundred.
+constexpr int dense_capacitance_spheres = 32;
+// Beyond that, the fraction of the chain's spheres coupled above which the
+// sparse LU of the whole matrix is used instead: I + G M is then nearly as
+// large as A and several times denser (a column per partner's rod, not per
+// bond). Measured on test_chain_contact_solve.cpp's clusters (one step):
+// with 10-50 % coupled the capacitance solve was 1.1-7.7x faster (n = 80 -
+// 1600, p = 36-156), with 70-100 % coupled 1.4-1.7x slower (n = 160-320).
+constexpr double max_coupled_fraction = 0.5;
+
+// 2^-round(log2 largest): the power of two that scales `largest` to ~1 (1 for 0).
+double power_of_two_scale(double largest) { return largest > 0.0 ? std::exp2(-std::round(std::log2(largest))) : 1.0; }
+
+// Solves with the sparse factors of I + G M, and with their transpose, in
+// the form Eigen's condition estimator takes (its SparseLU::adjoint() is
+// not const).
+struct SparseCapacitanceSolves {
+  using MatrixType = Eigen::MatrixXd;
+  using Scalar = double;
+  using RealScalar = double;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>>* lu;
+  bool transposed;
+  Eigen::Index rows() const { return lu->rows(); }
+  Eigen::Index cols() const { return lu->cols(); }
+  SparseCapacitanceSolves adjoint() const { return {lu, !transposed}; }
+  template <typename Rhs>
+  Eigen::VectorXd solve(const Rhs& b) const {
+    const Eigen::VectorXd rhs = b;
+    return transposed ? Eigen::VectorXd(lu->transpose().solve(rhs)) : Eigen::VectorXd(lu->solve(rhs));
+  }
+};
 
 }  // namespace
 
@@ -104,7 +139,8 @@ const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain_with_contacts
   band_diagonal.assign(diagonal.begin(), diagonal.begin() + n);
   band_upper.assign(upper.begin(), upper.begin() + n);
   band_rhs = rhs;
-  if (static_cast<int>(coupled_spheres.size()) > max_capacitance_spheres) return solve_chain_contacts_sparse(n);
+  const int p = static_cast<int>(coupled_spheres.size());
+  if (p > dense_capacitance_spheres && p > max_coupled_fraction * n) return solve_chain_contacts_sparse(n);
   if (!factorise_capacitance(n)) return solve_chain_contacts_sparse(n);
   apply_off_band_correction(rhs);
   // One step of iterative refinement where the backward error is above
@@ -119,6 +155,7 @@ const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain_with_contacts
   kept = Kept::chain_contacts;
   ++statistics.banded_steps;
   ++statistics.capacitance_steps;
+  if (capacitance_sparse_factors) ++statistics.sparse_capacitance_steps;
   return rhs;
 }
 
@@ -165,18 +202,33 @@ bool OverdampedRodSolver::Workspace::factorise_capacitance(int n) {
     for (int k = last - 1; k >= first; --k) y[k].noalias() -= upper[k] * y[k + 1];
   }
   // I + G M, G(t, a) = (T^-1 E_a) at sphere t when t is in a's segment; M
-  // holds a contact (i, j)'s blocks at (a_i, a_j) and (a_j, a_i).
-  capacitance.setIdentity(6 * p, 6 * p);
-  const auto add_column_times = [&](int a, int b, const Matrix6d& m) {  // column b += G(:, a) m
-    const int first = coupled_segment[a].first;
-    for (int t = coupled_in_segment[a].first; t < coupled_in_segment[a].second; ++t)
-      capacitance.block<6, 6>(6 * t, 6 * b).noalias() +=
-          coupled_columns[coupled_column_start[a] + coupled_spheres[t] - first] * m;
+  // holds a contact (i, j)'s blocks at (a_i, a_j) and (a_j, a_i): block
+  // (t, b) += G(t, a) m for each coupled sphere t of a's segment.
+  const auto for_each_product = [&](auto&& add) {
+    const auto column_times = [&](int a, int b, const Matrix6d& m) {
+      const int first = coupled_segment[a].first;
+      for (int t = coupled_in_segment[a].first; t < coupled_in_segment[a].second; ++t)
+        add(t, b, coupled_columns[coupled_column_start[a] + coupled_spheres[t] - first] * m);
+    };
+    for (const OffBandContact& c : off_band) {
+      column_times(coupled_index[c.i], coupled_index[c.j], c.ij);
+      column_times(coupled_index[c.j], coupled_index[c.i], c.ji);
+    }
   };
-  for (const OffBandContact& c : off_band) {
-    add_column_times(coupled_index[c.i], coupled_index[c.j], c.ij);
-    add_column_times(coupled_index[c.j], coupled_index[c.i], c.ji);
+  capacitance_sparse_factors = p > dense_capacitance_spheres;
+  if (capacitance_sparse_factors) {
+    capacitance_triplets.clear();
+    for (int r = 0; r < 6 * p; ++r) capacitance_triplets.emplace_back(r, r, 1.0);
+    for_each_product([&](int t, int b, const Matrix6d& block) {
+      for (int col = 0; col < 6; ++col)
+        for (int row = 0; row < 6; ++row) capacitance_triplets.emplace_back(6 * t + row, 6 * b + col, block(row, col));
+    });
+    capacitance_sparse.resize(6 * p, 6 * p);
+    capacitance_sparse.setFromTriplets(capacitance_triplets.begin(), capacitance_triplets.end());
+    return factorise_sparse_capacitance();
   }
+  capacitance.setIdentity(6 * p, 6 * p);
+  for_each_product([&](int t, int b, const Matrix6d& block) { capacitance.block<6, 6>(6 * t, 6 * b) += block; });
   if (!capacitance.allFinite()) return false;
   equilibrate_capacitance();
   capacitance_lu.compute(capacitance);
@@ -194,14 +246,71 @@ bool OverdampedRodSolver::Workspace::factorise_capacitance(int n) {
 // the LU's pivots are chosen among comparable entries. Solves with the scaled
 // matrix: C y = z as (Dr C Dc) (Dc^-1 y) = Dr z.
 void OverdampedRodSolver::Workspace::equilibrate_capacitance() {
-  const auto power_of_two = [](double largest) { return largest > 0.0 ? std::exp2(-std::round(std::log2(largest))) : 1.0; };
   const int m = static_cast<int>(capacitance.rows());
   capacitance_row_scale.resize(m);
   capacitance_column_scale.resize(m);
-  for (int i = 0; i < m; ++i) capacitance_row_scale(i) = power_of_two(capacitance.row(i).cwiseAbs().maxCoeff());
+  for (int i = 0; i < m; ++i) capacitance_row_scale(i) = power_of_two_scale(capacitance.row(i).cwiseAbs().maxCoeff());
   capacitance = capacitance_row_scale.asDiagonal() * capacitance;
-  for (int j = 0; j < m; ++j) capacitance_column_scale(j) = power_of_two(capacitance.col(j).cwiseAbs().maxCoeff());
+  for (int j = 0; j < m; ++j) capacitance_column_scale(j) = power_of_two_scale(capacitance.col(j).cwiseAbs().maxCoeff());
   capacitance = capacitance * capacitance_column_scale.asDiagonal();
+}
+
+// The sparse I + G M equilibrated as the dense one and factorised (the
+// pattern's COLAMD ordering and symbolic analysis kept while the contacts
+// stay); false where it is not finite, singular or its reciprocal condition
+// estimate (1-norm, Hager-Higham: Eigen's estimator, with solves by the
+// sparse factors) is below capacitance_rcond_floor.
+bool OverdampedRodSolver::Workspace::factorise_sparse_capacitance() {
+  for (int k = 0; k < capacitance_sparse.nonZeros(); ++k)
+    if (!std::isfinite(capacitance_sparse.valuePtr()[k])) return false;
+  equilibrate_sparse_capacitance();
+  const int outer_size = static_cast<int>(capacitance_sparse.outerSize()) + 1;
+  const int nonzeros = static_cast<int>(capacitance_sparse.nonZeros());
+  const bool same_pattern =
+      static_cast<int>(capacitance_outer.size()) == outer_size && static_cast<int>(capacitance_inner.size()) == nonzeros &&
+      std::equal(capacitance_outer.begin(), capacitance_outer.end(), capacitance_sparse.outerIndexPtr()) &&
+      std::equal(capacitance_inner.begin(), capacitance_inner.end(), capacitance_sparse.innerIndexPtr());
+  if (!same_pattern) {
+    capacitance_sparse_lu.analyzePattern(capacitance_sparse);
+    capacitance_outer.assign(capacitance_sparse.outerIndexPtr(), capacitance_sparse.outerIndexPtr() + outer_size);
+    capacitance_inner.assign(capacitance_sparse.innerIndexPtr(), capacitance_sparse.innerIndexPtr() + nonzeros);
+  }
+  capacitance_sparse_lu.factorize(capacitance_sparse);
+  if (capacitance_sparse_lu.info() != Eigen::Success) {
+    capacitance_outer.clear();  // a failed factorisation leaves no analysis to reuse
+    return false;
+  }
+  double norm = 0.0;  // 1-norm: largest column sum
+  for (int j = 0; j < capacitance_sparse.outerSize(); ++j) {
+    double sum = 0.0;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(capacitance_sparse, j); it; ++it) sum += std::fabs(it.value());
+    norm = std::max(norm, sum);
+  }
+  const SparseCapacitanceSolves solves{&capacitance_sparse_lu, false};
+  const double rcond = Eigen::internal::rcond_estimate_helper(norm, solves);
+  return rcond >= capacitance_rcond_floor;  // false for NaN too
+}
+
+// The dense equilibration below on the sparse matrix: rows, then columns,
+// to largest entry ~1 by powers of two.
+void OverdampedRodSolver::Workspace::equilibrate_sparse_capacitance() {
+  const int m = static_cast<int>(capacitance_sparse.rows());
+  capacitance_row_scale.setZero(m);
+  capacitance_column_scale.resize(m);
+  using Iterator = Eigen::SparseMatrix<double>::InnerIterator;
+  for (int j = 0; j < m; ++j)
+    for (Iterator it(capacitance_sparse, j); it; ++it)
+      capacitance_row_scale(it.row()) = std::max(capacitance_row_scale(it.row()), std::fabs(it.value()));
+  for (int i = 0; i < m; ++i) capacitance_row_scale(i) = power_of_two_scale(capacitance_row_scale(i));
+  for (int j = 0; j < m; ++j) {
+    double largest = 0.0;
+    for (Iterator it(capacitance_sparse, j); it; ++it) {
+      it.valueRef() *= capacitance_row_scale(it.row());
+      largest = std::max(largest, std::fabs(it.value()));
+    }
+    capacitance_column_scale(j) = power_of_two_scale(largest);
+    for (Iterator it(capacitance_sparse, j); it; ++it) it.valueRef() *= capacitance_column_scale(j);
+  }
 }
 
 // x <- x - T^-1 E M y with (I + G M) y = E^T x, for x = T^-1 b.
@@ -210,7 +319,8 @@ void OverdampedRodSolver::Workspace::apply_off_band_correction(Eigen::VectorXd& 
   coupled_work.resize(6 * p);
   for (int a = 0; a < p; ++a) coupled_work.segment<6>(6 * a) = x.segment<6>(6 * coupled_spheres[a]);
   coupled_work.array() *= capacitance_row_scale.array();
-  coupled_work = capacitance_lu.solve(coupled_work).eval();
+  coupled_work = capacitance_sparse_factors ? capacitance_sparse_lu.solve(coupled_work).eval()
+                                            : capacitance_lu.solve(coupled_work).eval();
   coupled_work.array() *= capacitance_column_scale.array();
   coupled_load.setZero(6 * p);  // M y
   for (const OffBandContact& c : off_band) {

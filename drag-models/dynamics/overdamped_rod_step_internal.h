@@ -180,6 +180,15 @@ struct OverdampedRodSolver::Workspace {
   Eigen::MatrixXd capacitance;  // I + G M, equilibrated: Dr (I + G M) Dc
   Eigen::VectorXd capacitance_row_scale, capacitance_column_scale;  // Dr, Dc (powers of two)
   Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_lu;
+  // Beyond dense_capacitance_spheres coupled spheres the same matrix, sparse
+  // (G block diagonal by chain segment, M the contact graph), by a sparse LU
+  // with a fill-reducing column ordering, its pattern analysed only when it
+  // changed (a plug's contacts persist over many steps).
+  bool capacitance_sparse_factors = false;  // the last factors are capacitance_sparse_lu's
+  std::vector<Eigen::Triplet<double>> capacitance_triplets;
+  Eigen::SparseMatrix<double> capacitance_sparse;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> capacitance_sparse_lu;
+  std::vector<int> capacitance_outer, capacitance_inner;  // pattern capacitance_sparse_lu was analysed for
   mutable Eigen::VectorXd coupled_work, coupled_load;  // y and M y of a solve
 
   // The factorisation of the last step, for newton_correction: which one
@@ -240,6 +249,8 @@ struct OverdampedRodSolver::Workspace {
   void add_pair_contact_blocks(double dt, int n);
   bool factorise_capacitance(int n);
   void equilibrate_capacitance();
+  bool factorise_sparse_capacitance();
+  void equilibrate_sparse_capacitance();
   void apply_off_band_correction(Eigen::VectorXd& x) const;
   double chain_contact_backward_error(const Eigen::VectorXd& x);
   const Eigen::VectorXd& solve_chain_contacts_sparse(int n);

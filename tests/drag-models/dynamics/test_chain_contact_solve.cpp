@@ -1,8 +1,8 @@
 // The capacitance (Woodbury) solve of chains with pair contacts off the band
 // (dynamics/chain_contact_solve.cpp) against the general sparse LU of the
-// same step: clusters of 2, 5 and 20 touching rods, and matrices where it
-// must hand over to the sparse LU (a singular band, more coupled spheres
-// than it takes).
+// same step: clusters of 2, 5, 20 and 40 touching rods (the capacitance
+// matrix factorised densely and sparsely), and matrices where it must hand
+// over to the sparse LU (a singular band, nearly every sphere coupled).
 #include "common/math_constants.h"
 #include "dynamics/overdamped_rod_step.h"
 #include "dynamics/rod_cluster.h"
@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -133,7 +134,7 @@ OverdampedRod lone_sphere(const Eigen::Vector3d& x) {
 }
 }  // namespace
 
-// 2, 5 and 20 rods of 8 spheres touching in a staircase (and across it):
+// 2, 5 and 20 rods touching in a staircase (and across it):
 // the capacitance solve is the same linear algebra as the sparse LU, so the
 // two agree to round-off amplified by the step matrix's condition. That
 // amplification is large here (a Hertz contact of ~5 N/m and bonds of
@@ -148,12 +149,16 @@ OverdampedRod lone_sphere(const Eigen::Vector3d& x) {
 // The translations are compared through the positions (x + dx at
 // |x| <= 60 d: position round-off ~1e-20 m against displacements ~1e-7 m).
 TEST(ChainContactSolve, ClustersOfTouchingRodsMatchTheSparseLu) {
-  for (const auto& [chains, bundle] : std::vector<std::pair<int, bool>>{{2, false}, {5, false}, {5, true}, {20, true}}) {
-    const OverdampedRod rod = staircase(chains, 8, bundle);
+  // (rods, spheres per rod, bundled): the 20-rod cluster has 76 of its 160
+  // spheres coupled (the sparse capacitance LU).
+  const std::vector<std::tuple<int, int, bool>> clusters = {{2, 8, false}, {5, 8, false}, {5, 8, true}, {20, 8, false}};
+  for (const auto& [chains, spheres, bundle] : clusters) {
+    const OverdampedRod rod = staircase(chains, spheres, bundle);
     const Compared c = compare_with_sparse_lu(rod, local_drag(rod.size()));
-    std::printf("%d rods%s: capacitance steps %ld, fallbacks %ld; from the sparse LU: translations %.2e, rotations "
+    std::printf("%d rods%s: capacitance steps %ld (sparse %ld), fallbacks %ld; from the sparse LU: translations %.2e, rotations "
                 "%.2e (dense LU: %.2e, %.2e)\n",
-                chains, bundle ? " (bundled)" : "", c.statistics.capacitance_steps, c.statistics.capacitance_fallbacks,
+                chains, bundle ? " (bundled)" : "", c.statistics.capacitance_steps, c.statistics.sparse_capacitance_steps,
+                c.statistics.capacitance_fallbacks,
                 c.automatic.translation, c.automatic.rotation, c.dense.translation, c.dense.rotation);
     EXPECT_EQ(c.statistics.capacitance_steps, 1) << chains << " rods: the capacitance path";
     EXPECT_EQ(c.statistics.capacitance_fallbacks, 0);
@@ -162,11 +167,31 @@ TEST(ChainContactSolve, ClustersOfTouchingRodsMatchTheSparseLu) {
   }
 }
 
-// More coupled spheres than the dense capacitance LU takes (40 rods laid
-// side by side, every sphere touching its neighbours: 320 coupled spheres):
-// the sparse LU solves the same matrix (its entries summed in the same
-// order as the general path's), the same result to round-off.
-TEST(ChainContactSolve, ALargeClusterGoesToTheSparseLu) {
+// A cluster of 40 rods of 20 spheres in a staircase (156 of its 800 spheres
+// coupled by contacts off the band, a capacitance matrix of 936 unknowns)
+// takes the capacitance path with the sparse LU of I + G M, and agrees
+// with the sparse LU of the whole matrix to the bound of the clusters
+// above (1e-12, or four times the sparse and dense LUs' own difference).
+TEST(ChainContactSolve, ALargeClusterTakesTheSparseCapacitanceSolve) {
+  const OverdampedRod rod = staircase(40, 20, false);
+  const Compared c = compare_with_sparse_lu(rod, local_drag(rod.size()));
+  std::printf("40 rods of 20 in a staircase: sparse capacitance steps %ld, fallbacks %ld; from the sparse LU: "
+              "translations %.2e, rotations %.2e (dense LU: %.2e, %.2e)\n",
+              c.statistics.sparse_capacitance_steps, c.statistics.capacitance_fallbacks, c.automatic.translation,
+              c.automatic.rotation, c.dense.translation, c.dense.rotation);
+  EXPECT_EQ(c.statistics.capacitance_steps, 1);
+  EXPECT_EQ(c.statistics.sparse_capacitance_steps, 1);
+  EXPECT_EQ(c.statistics.capacitance_fallbacks, 0);
+  EXPECT_LT(c.automatic.translation, std::max(1e-12, 4.0 * c.dense.translation));
+  EXPECT_LT(c.automatic.rotation, std::max(1e-12, 4.0 * c.dense.rotation));
+}
+
+// A cluster where every sphere is coupled (40 rods laid side by side, each
+// sphere touching its neighbours: 320 of 320), whose capacitance matrix
+// would be as large as the step's matrix and denser: the sparse LU solves
+// the same matrix (its entries summed in the same order as the general
+// path's), the same result to round-off.
+TEST(ChainContactSolve, AClusterCoupledThroughoutGoesToTheSparseLu) {
   std::vector<OverdampedRod> rods;
   for (int k = 0; k < 40; ++k) rods.push_back(rod_along_x(8, Eigen::Vector3d(0.3 * d * (k % 2), 0.95 * d * (k - 20), 0.0)));
   OverdampedRod rod = merge_rods(rods);

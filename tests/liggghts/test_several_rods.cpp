@@ -223,24 +223,31 @@ TEST(SeveralRods, AFastRodStopsOnARestingOneWithinTheStep) {
 
 namespace {
 
-// Three 10-sphere rods across the flow, level 3, 4-7 d apart (all within
-// the interaction reach), 20 steps of 2 us with `coupling` (fix
+// Rods of 10 spheres (`create_rods`: their create_rod commands) in a
+// 600 x 200 x 20 um slit, level 3, 20 steps of 2 us with `coupling` (fix
 // rod/implicit rod_interaction); the final sphere centres and the start.
-std::vector<Eigen::Vector3d> three_rods_run(const std::string &coupling, std::vector<Eigen::Vector3d> *start) {
+std::vector<Eigen::Vector3d> rods_run(const std::vector<std::string> &create_rods, const std::string &coupling,
+                                      std::vector<Eigen::Vector3d> *start) {
   hsrod_test::LiggghtsSession s;
   s.commands({"units si", "atom_style hybrid granular molecular", "atom_modify map array sort 0 0", "boundary f f f",
               "newton off", "communicate single cutoff 1e-5 vel yes",
-              "region box block 0 600e-6 0 200e-6 0 20e-6 units box", "create_box 1 box",
-              "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 297e-6 100e-6 10e-6 angle 0",
-              "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 309e-6 104e-6 10e-6 angle 0.2",
-              "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 330e-6 98e-6 10e-6 angle -0.1",
-              "fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3",
+              "region box block 0 600e-6 0 200e-6 0 20e-6 units box", "create_box 1 box"});
+  s.commands(create_rods);
+  s.commands({"fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3",
               "fix drag all hele_shaw/drag mean_velocity 0.03 model nonlocal",
               "fix step all rod/implicit bonds bonds drag drag rod_interaction " + coupling, "timestep 2e-6",
               "run 0"});
   if (start) *start = s.gather("x");
   s.command("run 20");
   return s.gather("x");
+}
+
+// Three rods across the flow, 4-7 d apart (all within the interaction reach).
+std::vector<Eigen::Vector3d> three_rods_run(const std::string &coupling, std::vector<Eigen::Vector3d> *start) {
+  return rods_run({"create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 297e-6 100e-6 10e-6 angle 0",
+                   "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 309e-6 104e-6 10e-6 angle 0.2",
+                   "create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre 330e-6 98e-6 10e-6 angle -0.1"},
+                  coupling, start);
 }
 
 }  // namespace
@@ -282,20 +289,11 @@ namespace {
 // six into one cluster and couples every pair, the pairs 160-400 um apart
 // too; solved apart, those pairs are the far field's (rod_far_field).
 std::vector<Eigen::Vector3d> rods_in_a_row_run(const std::string &coupling, std::vector<Eigen::Vector3d> *start) {
-  hsrod_test::LiggghtsSession s;
-  s.commands({"units si", "atom_style hybrid granular molecular", "atom_modify map array sort 0 0", "boundary f f f",
-              "newton off", "communicate single cutoff 1e-5 vel yes",
-              "region box block 0 600e-6 0 200e-6 0 20e-6 units box", "create_box 1 box"});
+  std::vector<std::string> rods;
   for (int r = 0; r < 6; ++r)
-    s.command("create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre " + hsrod_test::num(100e-6 + 80e-6 * r) +
-              " " + hsrod_test::num(100e-6 + 3e-6 * (r % 3)) + " 10e-6 angle " + hsrod_test::num(0.3 * r - 0.7));
-  s.commands({"fix bonds all rod/bonds youngs_modulus 15e6 poisson_ratio 0.3",
-              "fix drag all hele_shaw/drag mean_velocity 0.03 model nonlocal",
-              "fix step all rod/implicit bonds bonds drag drag rod_interaction " + coupling, "timestep 2e-6",
-              "run 0"});
-  if (start) *start = s.gather("x");
-  s.command("run 20");
-  return s.gather("x");
+    rods.push_back("create_rod spheres 10 diameter 3e-6 type 1 density 1170 centre " + hsrod_test::num(100e-6 + 80e-6 * r) +
+                   " " + hsrod_test::num(100e-6 + 3e-6 * (r % 3)) + " 10e-6 angle " + hsrod_test::num(0.3 * r - 0.7));
+  return rods_run(rods, coupling, start);
 }
 
 }  // namespace

@@ -79,6 +79,9 @@ void CrossRodFarField::build(const std::vector<int>& ids, const std::vector<cons
   boxes_.clear();
   terms_.clear();
   if (count > 0) build_box(0, count);
+  id_positions_.resize(count);
+  for (int t = 0; t < count; ++t) id_positions_[t] = {ids_[rod_order_[t]], t};
+  std::sort(id_positions_.begin(), id_positions_.end());
 }
 
 int CrossRodFarField::build_box(int first, int last) {
@@ -171,6 +174,18 @@ double CrossRodFarField::add_disturbance(const RodGeometry& target, const std::v
   std::vector<Cx> sum(2 * n, Cx{0.0, 0.0});
   double bound[2] = {0.0, 0.0};  // per channel, the same for every target sphere
   const std::size_t stride = 2 * (kOrder + 1);
+  // The excluded rods' places in tree order: a box holding one is opened,
+  // never summed whole, so that no pair coupled exactly is added again.
+  std::vector<int> excluded_places;
+  for (int id : excluded) {
+    const auto at = std::lower_bound(id_positions_.begin(), id_positions_.end(), std::make_pair(id, -1));
+    if (at != id_positions_.end() && at->first == id) excluded_places.push_back(at->second);
+  }
+  std::sort(excluded_places.begin(), excluded_places.end());
+  const auto holds_excluded = [&](const Box& box) {
+    const auto at = std::lower_bound(excluded_places.begin(), excluded_places.end(), box.first);
+    return at != excluded_places.end() && *at < box.last;
+  };
   std::vector<int> stack{0};
   while (!stack.empty()) {
     const Box& box = boxes_[stack.back()];
@@ -178,7 +193,7 @@ double CrossRodFarField::add_disturbance(const RodGeometry& target, const std::v
     stack.pop_back();
     const double gap = box_gap(tx0, tx1, ty0, ty1, box.x_min, box.x_max, box.y_min, box.y_max);
     const double distance = std::hypot(cx - box.cx, cy - box.cy) - target_radius;
-    if (gap > reach_ && distance > 0.0 && box.radius <= kOpening * distance) {
+    if (gap > reach_ && distance > 0.0 && box.radius <= kOpening * distance && !holds_excluded(box)) {
       // every target sphere is >= `distance` from the centre: q <= radius / distance there
       const double tail = truncation_factor(box.radius / distance) / (distance * distance);
       for (int c = 0; c < 2; ++c) bound[c] += box.force_sum[c] * tail;

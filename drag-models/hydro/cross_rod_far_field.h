@@ -23,13 +23,14 @@
 // (Greengard & Rokhlin 1987, J. Comput. Phys. 73: 325, for the pole 1/z;
 // here its derivative). The rods' spheres are sorted into a binary tree
 // of boxes (halved at the median rod centre along the longer side); a box
-// whose spheres are all farther than r_c from the target rod's and whose
-// radius is at most kOpening of its distance is summed from its expansion,
+// whose spheres are all farther than r_c from the target rod's, whose
+// radius is at most kOpening of its distance and which holds no rod coupled
+// exactly (excluded: the target's unit may reach beyond r_c, and its
+// neighbour list may hold rods just beyond it) is summed from its expansion,
 // q <= 1/2, T_20(1/2) = 2.2e-5; the rest is opened down to its rods, and
-// each rod not coupled exactly (not within r_c, not of the target's unit)
-// is summed sphere by sphere with the dipole. Every rod pair is thus
-// counted once: within r_c by the exact pair mobilities (add_disturbance),
-// beyond it here. Cost per target rod ~ the rods near r_c plus ~log N boxes.
+// each rod not coupled exactly is summed sphere by sphere with the dipole.
+// Every rod pair is thus counted once: by the exact pair mobilities or the
+// unit's joint solve (add_disturbance's `excluded`), or here. Cost per target rod ~ the rods near r_c plus ~log N boxes.
 //
 // What the dipole leaves out of the pair mobility the joint solve uses at
 // r > r_c: the Bessel terms of G, ~e^(-r/l), 6e-7 of the dipole at r_c,
@@ -44,6 +45,7 @@
 #include "hydro/cross_rod_disturbance.h"
 #include "hydro/hydrodynamic_model.h"
 
+#include <utility>
 #include <vector>
 
 namespace hsrod {
@@ -93,6 +95,7 @@ class CrossRodFarField {
   double dipole_strength_ = 0.0;  // K [m^3/(N s)]
   double reach_ = 0.0;            // r_c [m]
   std::vector<int> rod_order_;    // rod index (into the build's lists) by tree order
+  std::vector<std::pair<int, int>> id_positions_;  // (rod id, place in tree order), ascending
   std::vector<int> ids_;          // rod id by rod index
   std::vector<int> sphere_first_; // by rod index: first sphere in the arrays below; size rods + 1
   std::vector<double> x_, y_;     // sphere centres [m]

@@ -140,8 +140,14 @@ const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain_with_contacts
   band_upper.assign(upper.begin(), upper.begin() + n);
   band_rhs = rhs;
   const int p = static_cast<int>(coupled_spheres.size());
-  if (p > dense_capacitance_spheres && p > max_coupled_fraction * n) return solve_chain_contacts_sparse(n);
-  if (!factorise_capacitance(n)) return solve_chain_contacts_sparse(n);
+  if (p > dense_capacitance_spheres && p > max_coupled_fraction * n) {  // coupled throughout: the LU by design
+    ++statistics.capacitance_handovers;
+    return solve_chain_contacts_sparse(n);
+  }
+  if (!factorise_capacitance(n)) {
+    ++statistics.capacitance_fallbacks;
+    return solve_chain_contacts_sparse(n);
+  }
   apply_off_band_correction(rhs);
   // One step of iterative refinement where the backward error is above
   // round-off, with the same factors; the sparse LU if still above.
@@ -150,7 +156,10 @@ const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain_with_contacts
     resolve_banded(refinement);
     apply_off_band_correction(refinement);
     rhs += refinement;
-    if (!(chain_contact_backward_error(rhs) <= backward_error_ceiling)) return solve_chain_contacts_sparse(n);
+    if (!(chain_contact_backward_error(rhs) <= backward_error_ceiling)) {
+      ++statistics.capacitance_fallbacks;
+      return solve_chain_contacts_sparse(n);
+    }
   }
   kept = Kept::chain_contacts;
   ++statistics.banded_steps;
@@ -368,7 +377,7 @@ double OverdampedRodSolver::Workspace::chain_contact_backward_error(const Eigen:
   return error;
 }
 
-// The fallback: the same matrix (band blocks and off-band contacts as
+// The fallback (and the hand-over of a cluster coupled throughout): the same matrix (band blocks and off-band contacts as
 // assembled) and right-hand side through the sparse LU (factorize_sparse).
 const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain_contacts_sparse(int n) {
   triplets.clear();
@@ -390,7 +399,6 @@ const Eigen::VectorXd& OverdampedRodSolver::Workspace::solve_chain_contacts_spar
   matrix.resize(6 * n, 6 * n);
   matrix.setFromTriplets(triplets.begin(), triplets.end());
   ++statistics.sparse_steps;
-  ++statistics.capacitance_fallbacks;
   if (!factorize_sparse()) {  // singular: a non-finite update for the step guard (as solve_sparse)
     dy.setConstant(6 * n, std::numeric_limits<double>::quiet_NaN());
     kept = Kept::none;

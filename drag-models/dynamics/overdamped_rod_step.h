@@ -116,6 +116,8 @@ struct OverdampedSolverStatistics {
   // Chains with pair contacts off the band (dynamics/chain_contact_solve.cpp):
   long capacitance_steps = 0;      // solved by the capacitance solve (counted in banded_steps)
   long capacitance_fallbacks = 0;  // refused by it, solved by the sparse LU (counted in sparse_steps)
+  long capacitance_handovers = 0;  // coupled throughout (more than the dense size and the coupled
+                                   // fraction), sent to the sparse LU without trying (counted in sparse_steps)
   long sparse_capacitance_steps = 0;  // of capacitance_steps, those with a sparse LU of the capacitance matrix
 };
 

@@ -36,6 +36,7 @@ void accumulate(OverdampedSolverStatistics& a, const OverdampedSolverStatistics&
   a.dense_steps += b.dense_steps;
   a.capacitance_steps += b.capacitance_steps;
   a.capacitance_fallbacks += b.capacitance_fallbacks;
+  a.capacitance_handovers += b.capacitance_handovers;
   a.sparse_capacitance_steps += b.sparse_capacitance_steps;
 }
 
@@ -51,6 +52,7 @@ OverdampedSolverStatistics difference(const OverdampedSolverStatistics& a, const
   d.dense_steps = a.dense_steps - b.dense_steps;
   d.capacitance_steps = a.capacitance_steps - b.capacitance_steps;
   d.capacitance_fallbacks = a.capacitance_fallbacks - b.capacitance_fallbacks;
+  d.capacitance_handovers = a.capacitance_handovers - b.capacitance_handovers;
   d.sparse_capacitance_steps = a.sparse_capacitance_steps - b.sparse_capacitance_steps;
   return d;
 }

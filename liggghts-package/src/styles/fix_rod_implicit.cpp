@@ -224,6 +224,10 @@ void FixRodImplicit::setup(int) {
     if (screen) fputs(msg, screen);
     if (logfile) fputs(msg, logfile);
   }
+  if (far_field_given_ && !apart() && comm->me == 0)
+    error->warning(FLERR, "fix rod/implicit: rod_far_field has no effect here: it applies with rod_interaction lagged "
+                          "or iterated only (with yes / joint the rods within the reach are solved jointly and those "
+                          "beyond it are not coupled; with no no rod pair is)");
   if (force->pair && comm->me == 0)
     error->warning(FLERR, "fix rod/implicit: pair forces (rod-rod contacts) enter explicitly; keep the timestep "
                           "below the contact limit");

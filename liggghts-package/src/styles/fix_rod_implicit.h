@@ -153,6 +153,7 @@ class FixRodImplicit : public Fix, public PartnerIntegrator, public RodRemovalLi
   // rod_far_field yes: the rods beyond the reach summed by their multipoles
   // (hydro/cross_rod_far_field.h), from the obstruction forces at each sweep's start.
   bool far_field_ = true;
+  bool far_field_given_ = false;  // rod_far_field set in the command (warned about where it has no effect)
   hsrod::CrossRodFarField far_field_sum_;
   void build_far_field();
   bool apart() const { return rods_apart_ != RodsApart::off; }

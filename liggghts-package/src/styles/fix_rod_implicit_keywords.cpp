@@ -55,6 +55,7 @@ void FixRodImplicit::parse_keywords(int narg, char **arg) {
       parse_rod_interaction(narg, arg, iarg);
     } else if (strcmp(key, "rod_far_field") == 0) {
       far_field_ = parse_yes_no(error, "fix rod/implicit", key, val);
+      far_field_given_ = true;
     } else if (strcmp(key, "contact_solve") == 0) {
       if (strcmp(val, "capacitance") != 0 && strcmp(val, "lu") != 0)
         error->all(FLERR, "fix rod/implicit: contact_solve expects capacitance or lu");

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace hsrod {
 
@@ -82,6 +83,10 @@ void CrossRodFarField::build(const std::vector<int>& ids, const std::vector<cons
   id_positions_.resize(count);
   for (int t = 0; t < count; ++t) id_positions_[t] = {ids_[rod_order_[t]], t};
   std::sort(id_positions_.begin(), id_positions_.end());
+  const auto twice = std::adjacent_find(id_positions_.begin(), id_positions_.end(),
+                                        [](const auto& a, const auto& b) { return a.first == b.first; });
+  if (twice != id_positions_.end())
+    throw std::invalid_argument("cross-rod far field: rod id " + std::to_string(twice->first) + " given twice");
 }
 
 int CrossRodFarField::build_box(int first, int last) {

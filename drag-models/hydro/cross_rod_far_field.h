@@ -25,12 +25,13 @@
 // of boxes (halved at the median rod centre along the longer side); a box
 // whose spheres are all farther than r_c from the target rod's, whose
 // radius is at most kOpening of its distance and which holds no rod coupled
-// exactly (excluded: the target's unit may reach beyond r_c, and its
-// neighbour list may hold rods just beyond it) is summed from its expansion,
-// q <= 1/2, T_20(1/2) = 2.2e-5; the rest is opened down to its rods, and
-// each rod not coupled exactly is summed sphere by sphere with the dipole.
-// Every rod pair is thus counted once: by the exact pair mobilities or the
-// unit's joint solve (add_disturbance's `excluded`), or here. Cost per target rod ~ the rods near r_c plus ~log N boxes.
+// exactly (excluded: a unit of rods in contact, solved jointly, may reach
+// beyond r_c) is summed from its expansion, q <= 1/2, T_20(1/2) = 2.2e-5;
+// the rest is opened down to its rods, and each rod not coupled exactly is
+// summed sphere by sphere with the dipole. Every rod pair is thus counted
+// once: by the exact pair mobilities or the unit's joint solve
+// (add_disturbance's `excluded`), or here. Cost per target rod ~ the rods
+// near r_c plus ~log N boxes.
 //
 // What the dipole leaves out of the pair mobility the joint solve uses at
 // r > r_c: the Bessel terms of G, ~e^(-r/l), 6e-7 of the dipole at r_c,
@@ -60,7 +61,7 @@ class CrossRodFarField {
   void set_scene(double viscosity, double gap_height, double reach);
   double reach() const { return reach_; }
 
-  // The rods (ids ascending or not: ties broken by id, so every rank builds
+  // The rods (ids unique, ascending or not: ties broken by id, so every rank builds
   // the same tree) with their in-plane sphere centres and obstruction
   // forces P^D, P^v; the forces are read now, not kept.
   void build(const std::vector<int>& ids, const std::vector<const RodGeometry*>& rods,

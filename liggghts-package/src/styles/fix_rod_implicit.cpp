@@ -81,6 +81,10 @@ FixRodImplicit::FixRodImplicit(LAMMPS *instance, int narg, char **arg)
   if (rod_friction_ < 0.0) rod_friction_ = wall_friction_;  // the rods' material: the wall friction coefficient
   if (limits_.adaptive && !guard_)
     error->all(FLERR, "fix rod/implicit: adaptive yes needs accuracy_guard yes (the substeps are the guard's)");
+  if (far_field_given_ && !apart() && comm->me == 0)
+    error->warning(FLERR, "fix rod/implicit: rod_far_field has no effect here: it applies with rod_interaction lagged "
+                          "or iterated only (with yes / joint, rods not linked within the reach are not coupled; "
+                          "with no, no rod pair is coupled)");
   // The partners must exist now (a script error is reported at its line);
   // they are looked up again at every init() and decide there themselves
   // that this fix integrates their work (implicit_partners.h).
@@ -224,10 +228,6 @@ void FixRodImplicit::setup(int) {
     if (screen) fputs(msg, screen);
     if (logfile) fputs(msg, logfile);
   }
-  if (far_field_given_ && !apart() && comm->me == 0)
-    error->warning(FLERR, "fix rod/implicit: rod_far_field has no effect here: it applies with rod_interaction lagged "
-                          "or iterated only (with yes / joint the rods within the reach are solved jointly and those "
-                          "beyond it are not coupled; with no no rod pair is)");
   if (force->pair && comm->me == 0)
     error->warning(FLERR, "fix rod/implicit: pair forces (rod-rod contacts) enter explicitly; keep the timestep "
                           "below the contact limit");

@@ -251,9 +251,10 @@ TEST(CrossRodFarField, RefusesABadSceneAndForcesThatDoNotFitTheRods) {
   EXPECT_THROW(far.build(s.ids, {&s.rods[0], &s.rods[1], &s.rods[2]}, {&s.forces[0], &s.forces[1], &wrong}),
                std::invalid_argument);
   EXPECT_THROW(CrossRodFarField::truncation_factor(1.0), std::invalid_argument);
+  const std::vector<int> twice{s.ids[0], s.ids[1], s.ids[0]};  // an id twice: the exclusion could not find both
+  EXPECT_THROW(far.build(twice, {&s.rods[0], &s.rods[1], &s.rods[2]}, {&s.forces[0], &s.forces[1], &s.forces[2]}),
+               std::invalid_argument);
 }
-
-}  // namespace
 
 // A unit stepped together (rods joined by contacts, transitively) can reach
 // far beyond r_c; its members are coupled by its own joint solve, so the far
@@ -269,3 +270,5 @@ TEST(CrossRodFarField, LeavesOutTheTargetsUnitBeyondTheReach) {
               c.largest_allowed, c.worst_ratio);
   EXPECT_LE(c.worst_ratio, 1.0);
 }
+
+}  // namespace
